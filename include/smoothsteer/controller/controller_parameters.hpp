@@ -1,0 +1,74 @@
+#pragma once
+//! \file controller_parameters.hpp
+//! Parameters of the n-smooth lead-wheel controller (paper Sec. II and III). SI units throughout.
+
+#include <array>
+#include <numbers>
+#include <string>
+
+namespace smoothsteer {
+
+//! Which switching function drives the lead wheel.
+enum class SlidingSurface {
+  //! Globally convergent extension (docs/global_convergence.md). Equal in sign to the printed
+  //! surface for cos(psi) > 0 and |e| < 1 / ((1 - k_rob) kbar); converges from any pose.
+  global,
+  //! Eq. (sigma) exactly as printed. Only converges for |e| < 2 / ((1 - k_rob) kbar) and
+  //! cos(psi) > 0 (paper-notes §4). Kept for reproduction and comparison.
+  paper,
+};
+
+//! What the lead wheel aims at on a curved path.
+enum class CorneringTarget {
+  //! The lead wheel runs on a parallel offset of the path such that, in stationary cornering,
+  //! the REAR AXLE lies exactly on the path (docs/controller.md, "cornering offset").
+  rear_axle,
+  //! The lead wheel itself runs on the path, as in the paper. With the fictive wheelbase of
+  //! eq. (cornering_constr) the real front wheel then lies on the path and the rear axle cuts
+  //! the corner by about lambda_veh^2 / (2 R).
+  lead_wheel,
+};
+
+struct ControllerParameters {
+  //! Largest supported chain length. Fixed-size storage keeps update() allocation free.
+  static constexpr int max_order = 8;
+
+  //! n: number of fictive wheels in front of the rear axle. The steering angle is C^(n-1) and
+  //! its n-th derivative is bounded. n = 0 is the original (chattering) Dubins-car law.
+  int order = 2;
+  //! lambda_veh: wheelbase of the real vehicle [m].
+  double vehicle_wheelbase_m = 2.7;
+  //! lambda_1..lambda_n [m]. lambda_1 is the fictive wheelbase lambda (paper Sec. III item 3),
+  //! lambda_n the lead wheelbase lambda_l (for n = 2). Only the first n entries are used.
+  std::array<double, max_order> wheelbases_m{2.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
+  //! kbar_n: curvature bound of the lead wheel [1/m] (eq. kappan). The bounds of the wheels
+  //! behind it follow from the invariant sets (paper-notes §2).
+  double lead_curvature_bound = 0.2;
+  //! k_rob in [0, 1): robustness margin against matched disturbances |kappa_d| <= k_rob kbar_n
+  //! (eq. sigma). Path curvature is such a disturbance.
+  double k_rob = 0.3;
+  //! psi_max in (0, pi/2]: heading relative to the path with which the lead wheel approaches
+  //! from far away. pi/2 gives the Dubins turn-straight-turn.
+  double approach_angle_rad = std::numbers::pi / 2.0;
+  SlidingSurface surface = SlidingSurface::global;
+  CorneringTarget cornering_target = CorneringTarget::rear_axle;
+  //! Largest arc-length step [m] of the RK4 integration of the chain, relative to the shortest
+  //! wheelbase. A control period is split into at most max_substeps steps.
+  double max_substep_fraction = 0.1;
+  int max_substeps = 64;
+
+  //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
+  void validate() const;
+  //! Same checks without throwing: returns an empty string when valid, else the message.
+  std::string validation_error() const;
+
+  //! The paper's C^1 controller (n = 2) with the fictive wheelbase of eq. (cornering_constr):
+  //! lambda = sqrt(lambda_veh^2 - lambda_l^2).
+  static ControllerParameters paper_c1(double vehicle_wheelbase_m, double lead_wheelbase_m,
+                                       double lead_curvature_bound, double k_rob);
+  //! The C^0 controller (n = 1) acting on the front wheel, lambda = lambda_veh (eq. ext1).
+  static ControllerParameters paper_c0(double vehicle_wheelbase_m, double front_curvature_bound,
+                                       double k_rob);
+};
+
+}  // namespace smoothsteer

@@ -1,0 +1,75 @@
+#pragma once
+//! \file lead_wheel_controller.hpp
+//! The n-smooth path-tracking controller: the Dubins-car sliding-mode law acts on the lead wheel
+//! of a fictive trailer chain, whose front angle is the steering command (paper Sec. II).
+//!
+//! \code
+//!   auto path = std::make_shared<const smoothsteer::Path>(smoothsteer::Path::circle({0, 0}, 30));
+//!   smoothsteer::LeadWheelController controller(smoothsteer::ControllerParameters{}, path);
+//!   smoothsteer::ControllerOutput out;
+//!   controller.update({.rear_axle_position = {x, y}, .heading_rad = psi, .speed_mps = v,
+//!                      .period_s = 0.02}, out);
+//!   actuator.command(out.steering_angle_rad);
+//! \endcode
+
+#include <cmath>
+#include <memory>
+
+#include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/controller/trailer_chain.hpp"
+#include "smoothsteer/path/path.hpp"
+
+namespace smoothsteer {
+
+class LeadWheelController final : public SteeringController {
+ public:
+  //! Validates the parameters (std::invalid_argument on error) and requires a path.
+  LeadWheelController(const ControllerParameters& parameters, std::shared_ptr<const Path> path);
+
+  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+  //! Re-initialises the chain in stationary cornering at the measured steering angle (clamped
+  //! into the invariant set) for forward driving; the direction is re-detected from v.
+  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  const char* name() const noexcept override { return "lead_wheel"; }
+
+  //! Evaluation hook: a matched disturbance kappa_d added to the lead-wheel curvature, i.e. the
+  //! extended system receives kappa_n + kappa_d (paper Sec. III item 2: d psi_l / ds_l =
+  //! kappa_l + kappa_d). The law stays convergent for |kappa_d| < k_rob kbar_n.
+  void set_matched_disturbance(double lead_curvature_disturbance) noexcept {
+    matched_disturbance_ = std::isfinite(lead_curvature_disturbance) ? lead_curvature_disturbance : 0.0;
+  }
+
+  const ControllerParameters& parameters() const noexcept { return parameters_; }
+  const ChainBounds& bounds() const noexcept { return bounds_; }
+  const ChainAngles& chain_angles() const noexcept { return angles_; }
+  //! +1 while driving forwards, -1 in reverse.
+  double direction() const noexcept { return direction_; }
+  //! Steering angle of the real vehicle for chain front angle delta_1 (notes §3):
+  //! tan(delta_veh) / lambda_veh = direction * tan(delta_1) / lambda_1.
+  double vehicle_steering_angle(double front_angle) const noexcept;
+
+ private:
+  struct LeadWheelState {
+    PathProjection projection;
+    double relative_heading = 0.0;
+    SwitchingResult law;
+  };
+  LeadWheelState evaluate_lead_wheel(Vec2 rear_position, double travel_heading) noexcept;
+  void initialise_chain(double vehicle_steering_angle) noexcept;
+  double front_angle_from_vehicle(double vehicle_steering_angle) const noexcept;
+  double vehicle_steering_angle_of_chain() const noexcept;
+
+  ControllerParameters parameters_;
+  std::shared_ptr<const Path> path_;
+  ChainBounds bounds_;
+  ChainAngles angles_{};
+  double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
+  double direction_ = 1.0;
+  double matched_disturbance_ = 0.0;
+  double last_steering_angle_ = 0.0;
+  ProjectionHint rear_hint_, front_hint_, lead_hint_;
+};
+
+}  // namespace smoothsteer

@@ -1,0 +1,120 @@
+#pragma once
+//! \file path.hpp
+//! Reference paths: straight lines, line/arc sequences, circles and C2 cubic splines through
+//! waypoints, with warm-started closest-point projection.
+//!
+//! Conventions
+//!  - Arc length s [m] starts at 0 at the first point.
+//!  - The lateral error e [m] is signed: positive when the point is LEFT of the path direction
+//!    (paper Fig. `problem`: e > 0 above a path that runs in +x).
+//!  - Open paths extend along the end tangents: s < 0 and s > length() are valid projections
+//!    onto those half-lines, with zero curvature there.
+//!  - Closed paths (circles, closed line/arc loops) wrap s into [0, length()).
+//! Construction validates its input and throws std::invalid_argument with a message that names
+//! the field, the value and the rule. Evaluation and projection are noexcept and never allocate.
+
+#include <cstddef>
+#include <vector>
+
+#include "smoothsteer/math/vec2.hpp"
+#include "smoothsteer/path/path_segment.hpp"
+
+namespace smoothsteer {
+
+//! A point on the path.
+struct PathPoint {
+  Vec2 position;             //!< [m]
+  double heading_rad = 0.0;  //!< tangent direction [rad]
+  double curvature = 0.0;    //!< [1/m], positive = turning left
+};
+
+//! Result of a closest-point projection.
+struct PathProjection {
+  double arc_length_m = 0.0;     //!< s of the closest point (outside [0, L] on end extensions)
+  double lateral_error_m = 0.0;  //!< signed distance, left positive
+  double heading_rad = 0.0;      //!< path tangent at the closest point
+  double curvature = 0.0;        //!< path curvature at the closest point [1/m]
+  Vec2 closest_point;            //!< [m]
+  std::size_t segment_index = 0; //!< segment that holds the closest point
+};
+
+//! Warm-start memory of one projecting point (e.g. the lead wheel). Owned by the caller so that
+//! one const Path can be shared by many controllers and threads.
+struct ProjectionHint {
+  static constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::size_t segment_index = none;  //!< segment of the previous projection, or none
+  double parameter = 0.0;            //!< segment-local parameter of the previous projection
+  void reset() noexcept { segment_index = none; }
+};
+
+class Path {
+ public:
+  //! Options for the projection search.
+  struct ProjectionOptions {
+    //! Beyond this distance from the path the warm start is not trusted and a global search is
+    //! run (far from the path, the globally closest branch is the right one to approach).
+    double global_search_distance_m = 5.0;
+    //! The warm-started local walk visits at most this many segments before falling back to a
+    //! global search.
+    std::size_t max_local_steps = 64;
+  };
+
+  //! An infinite-looking straight line: from `start` along `heading_rad`, `length_m` long, with
+  //! both ends extended along the tangent.
+  static Path straight_line(Vec2 start, double heading_rad, double length_m = 100.0);
+  //! A full circle, closed. `counter_clockwise` = true turns left (positive curvature).
+  //! Starts at the point of the circle at angle `start_angle_rad` around the center.
+  static Path circle(Vec2 center, double radius_m, bool counter_clockwise = true,
+                     double start_angle_rad = 0.0);
+  //! A C2 natural cubic spline through the waypoints, chord-length parametrized. Heading and
+  //! curvature are continuous. Needs >= 2 points; consecutive duplicates are rejected by index.
+  static Path from_waypoints(const std::vector<Vec2>& waypoints);
+  //! Builds from explicit segments (see PathBuilder); checks G1 continuity between consecutive
+  //! segments (and end -> start if closed) within 1e-6 m and 1e-6 rad. The `s0` fields are
+  //! recomputed; a cubic's `length` must match its coefficients.
+  static Path from_segments(std::vector<PathSegment> segments, bool closed = false);
+
+  double length() const noexcept { return length_; }
+  bool is_closed() const noexcept { return closed_; }
+  std::size_t segment_count() const noexcept { return segments_.size(); }
+  const std::vector<PathSegment>& segments() const noexcept { return segments_; }
+  //! Largest |curvature| along the path [1/m].
+  double max_abs_curvature() const noexcept { return max_abs_curvature_; }
+
+  //! Position, heading and curvature at arc length s (wrapped if closed, extended if open).
+  PathPoint evaluate(double arc_length_m) const noexcept;
+
+  //! Global closest-point projection (no warm start): O(number of segments).
+  PathProjection project(Vec2 point) const noexcept;
+  //! Warm-started projection: amortised O(1) while the point moves continuously; falls back to
+  //! the global search on the first call, after `hint.reset()`, after too many local steps, or
+  //! when the point is farther than `options.global_search_distance_m` from the path.
+  PathProjection project(Vec2 point, ProjectionHint& hint) const noexcept;
+  PathProjection project(Vec2 point, ProjectionHint& hint,
+                         const ProjectionOptions& options) const noexcept;
+
+ private:
+  //! A circle enclosing one segment: lets the global search skip segments cheaply.
+  struct SegmentBound {
+    Vec2 center;
+    double radius = 0.0;
+  };
+
+  //! Sets arc lengths, bounds and cached end poses; the segments are already validated.
+  static Path assemble(std::vector<PathSegment> segments, bool closed);
+  PathProjection project_global(Vec2 point, ProjectionHint& hint) const noexcept;
+  //! Turns a segment-local result into a path result (s, end extensions, wrap) and stores
+  //! the warm start.
+  PathProjection finish_projection(Vec2 point, std::size_t index, const SegmentProjection& local,
+                                   ProjectionHint& hint) const noexcept;
+
+  std::vector<PathSegment> segments_;
+  std::vector<SegmentBound> bounds_;
+  PathPoint start_;  //!< pose at s = 0, for the start extension
+  PathPoint end_;    //!< pose at s = length(), for the end extension
+  double length_ = 0.0;
+  double max_abs_curvature_ = 0.0;
+  bool closed_ = false;
+};
+
+}  // namespace smoothsteer

@@ -1,0 +1,53 @@
+#pragma once
+//! \file kinematic_closed_loop.hpp
+//! Closed loop of a steering controller and the kinematic single-track model at constant speed,
+//! with a zero-order hold on the steering command. Used by the tests and the demo; the kinetic
+//! simulation with actuator, delay and noise lives in sim/simulation.hpp.
+
+#include <string>
+#include <vector>
+
+#include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"
+
+namespace smoothsteer {
+
+struct KinematicLoopOptions {
+  double wheelbase_m = 2.7;      //!< lambda_veh of the plant [m]
+  double speed_mps = 5.0;        //!< signed constant speed [m/s]
+  double period_s = 0.02;        //!< control period [s]
+  double duration_s = 60.0;      //!< simulated time [s]
+  //! Matched curvature disturbance added to the rear-axle curvature [1/m] (paper eq. sigma:
+  //! robustness for |kappa_d| <= k_rob kbar).
+  double curvature_disturbance = 0.0;
+  bool record_trace = true;
+};
+
+struct KinematicTraceSample {
+  double time_s = 0.0;
+  double distance_m = 0.0;  //!< travelled distance of the rear axle
+  Pose2 pose;
+  ControllerOutput output;
+};
+
+struct KinematicLoopResult {
+  Status status = Status::ok;
+  std::vector<KinematicTraceSample> trace;
+  double final_lateral_error_m = 0.0;
+  double final_heading_error_rad = 0.0;
+  double max_abs_steering_rad = 0.0;
+  double max_abs_steering_rate_radps = 0.0;          //!< from the controller's derivative output
+  double max_abs_steering_difference_rate_radps = 0.0; //!< |delta_k - delta_{k-1}| / dt
+  double max_abs_steering_acceleration_radps2 = 0.0;
+  bool any_non_finite = false;
+};
+
+//! Runs the loop; stops early with the controller's status if it returns an error.
+KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, const Pose2& start,
+                                              const KinematicLoopOptions& options);
+
+//! Writes the trace as CSV (columns documented in docs/controller.md) to `file_path` via a
+//! temporary file and rename, so that no half-written file is left behind.
+void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::string& file_path);
+
+}  // namespace smoothsteer

@@ -1,0 +1,16 @@
+#pragma once
+//! \file smoothsteer.hpp
+//! Umbrella header of the real-time core.
+
+#include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/controller/trailer_chain.hpp"
+#include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/math/vec2.hpp"
+#include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/sim/kinematic_closed_loop.hpp"
+#include "smoothsteer/status.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"

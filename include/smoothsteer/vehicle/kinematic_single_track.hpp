@@ -1,0 +1,24 @@
+#pragma once
+//! \file kinematic_single_track.hpp
+//! Kinematic single-track (bicycle) model with the rear axle as reference point:
+//!   dx/dt = v cos(psi),  dy/dt = v sin(psi),  dpsi/dt = v tan(delta) / lambda_veh  (eq. kappar)
+//! This is the model the controller is designed on.
+
+#include "smoothsteer/math/vec2.hpp"
+
+namespace smoothsteer {
+
+struct Pose2 {
+  Vec2 position;             //!< rear axle [m]
+  double heading_rad = 0.0;  //!< psi [rad]
+};
+
+struct KinematicSingleTrack {
+  double wheelbase_m = 2.7;  //!< lambda_veh [m]
+
+  //! Exact solution for constant steering angle and speed over dt (a circular arc).
+  Pose2 step(const Pose2& pose, double steering_angle_rad, double speed_mps,
+             double dt_s) const noexcept;
+};
+
+}  // namespace smoothsteer

@@ -1,0 +1,202 @@
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/math/angles.hpp"
+
+namespace smoothsteer {
+namespace {
+
+bool finite(double value) noexcept { return std::isfinite(value); }
+
+bool valid_input(const ControllerInput& input) noexcept {
+  return finite(input.rear_axle_position.x) && finite(input.rear_axle_position.y) &&
+         finite(input.heading_rad) && finite(input.speed_mps) &&
+         finite(input.acceleration_mps2) && finite(input.period_s) && input.period_s > 0.0;
+}
+
+}  // namespace
+
+LeadWheelController::LeadWheelController(const ControllerParameters& parameters,
+                                         std::shared_ptr<const Path> path)
+    : parameters_(parameters), path_(std::move(path)) {
+  parameters_.validate();
+  if (!path_) throw std::invalid_argument("LeadWheelController: path is null; a path is required");
+  bounds_ = compute_chain_bounds(parameters_);
+  for (int i = 0; i < parameters_.order; ++i) {
+    const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
+    chain_length_squared_ += lambda * lambda;
+  }
+  reset(0.0);
+}
+
+double LeadWheelController::vehicle_steering_angle(double front_angle) const noexcept {
+  if (parameters_.order == 0) return front_angle;
+  const double ratio = parameters_.vehicle_wheelbase_m / parameters_.wheelbases_m[0];
+  return direction_ * std::atan(ratio * std::tan(front_angle));
+}
+
+double LeadWheelController::front_angle_from_vehicle(double vehicle_steering_angle) const noexcept {
+  const double ratio = parameters_.wheelbases_m[0] / parameters_.vehicle_wheelbase_m;
+  return std::atan(ratio * std::tan(direction_ * vehicle_steering_angle));
+}
+
+void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexcept {
+  const int n = parameters_.order;
+  if (n == 0) {
+    angles_.fill(0.0);
+    last_steering_angle_ = vehicle_steering_angle;
+    return;
+  }
+  const double front = std::clamp(front_angle_from_vehicle(vehicle_steering_angle),
+                                  -bounds_.angle[0], bounds_.angle[0]);
+  stationary_chain(front, parameters_.wheelbases_m.data(), n, angles_);
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
+  }
+  last_steering_angle_ = vehicle_steering_angle_of_chain();
+}
+
+void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
+  direction_ = 1.0;
+  rear_hint_.reset();
+  front_hint_.reset();
+  lead_hint_.reset();
+  initialise_chain(finite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0);
+}
+
+double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
+  return vehicle_steering_angle(angles_[0]);
+}
+
+LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
+    Vec2 rear_position, double travel_heading) noexcept {
+  // Lead-wheel state from projecting its own position (paper Sec. II end, notes §6).
+  const int n = parameters_.order;
+  ChainGeometry geometry;
+  chain_geometry(rear_position, travel_heading, angles_, parameters_.wheelbases_m.data(), n,
+                 geometry);
+  const auto lead = static_cast<std::size_t>(n);
+  LeadWheelState state;
+  state.projection = path_->project(geometry.position[lead], lead_hint_);
+  state.relative_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
+  double target_offset = 0.0;
+  if (parameters_.cornering_target == CorneringTarget::rear_axle) {
+    target_offset = rear_axle_cornering_offset(state.projection.curvature, chain_length_squared_);
+  }
+  state.law = dubins_switching_law(state.projection.lateral_error_m - target_offset,
+                                   state.relative_heading, parameters_.lead_curvature_bound,
+                                   parameters_);
+  return state;
+}
+
+Status LeadWheelController::update(const ControllerInput& input,
+                                   ControllerOutput& output) noexcept {
+  if (!valid_input(input)) return Status::invalid_input;
+  const int n = parameters_.order;
+  const double* wheelbases = parameters_.wheelbases_m.data();
+
+  // Reversing: the chain is mirrored so that it always points along the direction of travel
+  // (paper Sec. II end: lambda_i < 0 for ds/dt < 0). Switching direction re-initialises the chain
+  // at the current steering angle, which keeps delta_veh continuous.
+  if (input.speed_mps != 0.0 && sign(input.speed_mps) != direction_) {
+    direction_ = sign(input.speed_mps);
+    initialise_chain(last_steering_angle_);
+  }
+  const double travel_heading = input.heading_rad + (direction_ < 0.0 ? pi : 0.0);
+
+  // One control period: the switching law is re-evaluated at every RK4 sub-step of the chain.
+  // The first sub-step uses the measured pose; later ones the rear-axle pose predicted by the
+  // chain's own kinematics (rear curvature tan(delta_1) / lambda_1). This keeps the discrete
+  // sliding band of the lead wheel at O(kbar h^2) for the sub-step h instead of O(kbar (v dt)^2).
+  const double distance = std::abs(input.speed_mps) * input.period_s;
+  int steps = 1;
+  if (n > 0 && distance > 0.0) {
+    double shortest = wheelbases[0];
+    for (int i = 1; i < n; ++i) shortest = std::min(shortest, wheelbases[i]);
+    const double largest_step = parameters_.max_substep_fraction * shortest;
+    steps = std::clamp(static_cast<int>(std::ceil(distance / largest_step)), 1,
+                       parameters_.max_substeps);
+  }
+  const double step_length = distance / steps;
+  Vec2 position = input.rear_axle_position;
+  double heading = travel_heading;
+  LeadWheelState first{};
+  double applied_curvature = 0.0;
+  for (int step = 0; step < steps; ++step) {
+    const LeadWheelState lead = evaluate_lead_wheel(position, heading);
+    if (step == 0) first = lead;
+    applied_curvature = lead.law.curvature + matched_disturbance_;
+    if (n == 0 || step_length <= 0.0) break;
+    const double front_before = angles_[0];
+    integrate_chain(angles_, wheelbases, n, applied_curvature, step_length, bounds_.angle);
+    // Rear-axle prediction along an arc of the mean chain curvature over the sub-step.
+    const double curvature =
+        0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0];
+    const double half_turn = 0.5 * curvature * step_length;
+    position = position + step_length * unit_from_heading(heading + half_turn);
+    heading += 2.0 * half_turn;
+  }
+  const SwitchingResult& law = first.law;
+
+  // Output: delta_veh and its time derivatives (d/dt = v d/ds, d2/dt2 = v^2 d2/ds2 + a d/ds).
+  double steering = 0.0, rate = 0.0, acceleration = 0.0;
+  int derivatives = 0;
+  if (n == 0) {
+    steering = direction_ * std::atan(parameters_.vehicle_wheelbase_m * applied_curvature);
+  } else {
+    const double ratio = parameters_.vehicle_wheelbase_m / wheelbases[0];
+    const double front = angles_[0];
+    const double c = std::cos(front), s = std::sin(front);
+    const double denominator = c * c + ratio * ratio * s * s;
+    const double gain = ratio / denominator;  // d delta_veh / d delta_1
+    const double curvature_of_gain =
+        -ratio * std::sin(2.0 * front) * (ratio * ratio - 1.0) / (denominator * denominator);
+    const FrontAngleDerivatives d = front_angle_derivatives(angles_, wheelbases, n, applied_curvature);
+    const double speed = std::abs(input.speed_mps);
+    const double front_rate = speed * d.first;
+    const double front_acceleration =
+        speed * speed * d.second + direction_ * input.acceleration_mps2 * d.first;
+    steering = vehicle_steering_angle(front);
+    rate = direction_ * gain * front_rate;
+    derivatives = n >= 2 ? 2 : 1;
+    if (n >= 2) {
+      acceleration =
+          direction_ * (curvature_of_gain * front_rate * front_rate + gain * front_acceleration);
+    }
+  }
+  if (!finite(steering) || !finite(rate) || !finite(acceleration)) {
+    initialise_chain(last_steering_angle_);
+    return Status::numerical_error;
+  }
+  last_steering_angle_ = steering;
+
+  // Diagnostics of the real axles.
+  const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
+  const Vec2 front_axle = input.rear_axle_position +
+                          parameters_.vehicle_wheelbase_m * unit_from_heading(input.heading_rad);
+  const PathProjection front_projection = path_->project(front_axle, front_hint_);
+
+  output.steering_angle_rad = steering;
+  output.steering_rate_radps = rate;
+  output.steering_acceleration_radps2 = acceleration;
+  output.derivatives_available = derivatives;
+  TrackingDiagnostics& diagnostics = output.diagnostics;
+  diagnostics.lateral_error_m = rear_projection.lateral_error_m;
+  diagnostics.heading_error_rad = wrap_angle(travel_heading - rear_projection.heading_rad);
+  diagnostics.front_lateral_error_m = front_projection.lateral_error_m;
+  diagnostics.lead_lateral_error_m = first.projection.lateral_error_m;
+  diagnostics.lead_heading_error_rad = first.relative_heading;
+  diagnostics.sliding_variable = law.sliding_variable;
+  diagnostics.lead_curvature = law.curvature;
+  diagnostics.path_arc_length_m = rear_projection.arc_length_m;
+  diagnostics.path_curvature = rear_projection.curvature;
+  diagnostics.fictive_steering_angle_rad = n > 0 ? angles_[0] : steering;
+  return Status::ok;
+}
+
+}  // namespace smoothsteer

@@ -1,0 +1,150 @@
+#include "smoothsteer/controller/trailer_chain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace smoothsteer {
+namespace {
+
+//! d delta_veh / d delta_1 for delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1.
+double real_angle_gain(double front_angle, double ratio) noexcept {
+  const double c = std::cos(front_angle);
+  const double s = std::sin(front_angle);
+  return ratio / (c * c + ratio * ratio * s * s);
+}
+
+//! |d delta_1/ds| in the worst case for a given delta_1 inside the invariant set:
+//! |kappa_1| <= kbar_1 gives kbar_1/cos(delta_1) + tan|delta_1|/lambda_1 (eq. ddelta_kappaf).
+double worst_front_rate(double front_angle, double kbar_1, double lambda_1) noexcept {
+  return kbar_1 / std::cos(front_angle) + std::tan(std::abs(front_angle)) / lambda_1;
+}
+
+}  // namespace
+
+ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
+  ChainBounds bounds;
+  const int n = parameters.order;
+  bounds.curvature[static_cast<std::size_t>(n)] = parameters.lead_curvature_bound;
+  for (int i = n; i >= 1; --i) {
+    const auto index = static_cast<std::size_t>(i);
+    const double kbar = bounds.curvature[index];
+    const double lambda = parameters.wheelbases_m[index - 1];
+    const double product = kbar * lambda;
+    bounds.angle[index - 1] = std::asin(product);                            // eq. (kappaf_constr)
+    bounds.curvature[index - 1] = kbar / std::sqrt(1.0 - product * product);  // paper-notes §2
+  }
+  bounds.steering_angle_rad = std::atan(parameters.vehicle_wheelbase_m * bounds.curvature[0]);
+  if (n == 0) {
+    bounds.steering_rate_per_meter = std::numeric_limits<double>::infinity();
+    return bounds;
+  }
+  // sup over |delta_1| <= delta-bar_1 of gain(delta_1) * worst_front_rate(delta_1): dense grid,
+  // then golden-section refinement around the best sample (the product is smooth and unimodal
+  // between grid points).
+  const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
+  const double kbar_1 = bounds.curvature[1];
+  const double lambda_1 = parameters.wheelbases_m[0];
+  const double limit = bounds.angle[0];
+  auto rate = [&](double angle) {
+    return real_angle_gain(angle, ratio) * worst_front_rate(angle, kbar_1, lambda_1);
+  };
+  constexpr int samples = 2000;
+  int best = 0;
+  double best_value = 0.0;
+  for (int k = 0; k <= samples; ++k) {
+    const double value = rate(limit * k / samples);
+    if (value > best_value) {
+      best_value = value;
+      best = k;
+    }
+  }
+  double low = limit * std::max(0, best - 1) / samples;
+  double high = limit * std::min(samples, best + 1) / samples;
+  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double a = high - golden * (high - low);
+    const double b = low + golden * (high - low);
+    if (rate(a) > rate(b)) {
+      high = b;
+    } else {
+      low = a;
+    }
+  }
+  bounds.steering_rate_per_meter = std::max(best_value, rate(0.5 * (low + high)));
+  return bounds;
+}
+
+void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
+                 double lead_curvature, ChainAngles& rates) noexcept {
+  double distance_ratio = 1.0;  // ds_{i-1} / ds
+  for (int i = 0; i < order; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const double next_curvature =
+        (i + 1 < order) ? std::tan(delta[k + 1]) / wheelbases[i + 1] : lead_curvature;
+    const double c = std::cos(delta[k]);
+    rates[k] = distance_ratio * (next_curvature / c - std::tan(delta[k]) / wheelbases[i]);
+    distance_ratio /= c;
+  }
+}
+
+FrontAngleDerivatives front_angle_derivatives(const ChainAngles& delta, const double* wheelbases,
+                                              int order, double lead_curvature) noexcept {
+  FrontAngleDerivatives result;
+  if (order < 1) return result;
+  ChainAngles rates{};
+  chain_rates(delta, wheelbases, order, lead_curvature, rates);
+  result.first = rates[0];
+  if (order < 2) return result;
+  // delta_1' = K_1 / cos(delta_1) - tan(delta_1) / lambda_1 with K_1 = tan(delta_2) / lambda_2.
+  const double c1 = std::cos(delta[0]);
+  const double c2 = std::cos(delta[1]);
+  const double front_curvature = std::tan(delta[1]) / wheelbases[1];
+  const double front_curvature_rate = rates[1] / (c2 * c2 * wheelbases[1]);
+  result.second = front_curvature_rate / c1 +
+                  front_curvature * std::sin(delta[0]) / (c1 * c1) * rates[0] -
+                  rates[0] / (c1 * c1 * wheelbases[0]);
+  return result;
+}
+
+void chain_geometry(Vec2 rear_position, double rear_heading, const ChainAngles& delta,
+                    const double* wheelbases, int order, ChainGeometry& geometry) noexcept {
+  geometry.position[0] = rear_position;
+  geometry.heading[0] = rear_heading;
+  for (int i = 1; i <= order; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    geometry.position[k] =
+        geometry.position[k - 1] + wheelbases[i - 1] * unit_from_heading(geometry.heading[k - 1]);
+    geometry.heading[k] = geometry.heading[k - 1] + delta[k - 1];
+  }
+}
+
+void stationary_chain(double front_angle, const double* wheelbases, int order,
+                      ChainAngles& delta) noexcept {
+  delta.fill(0.0);
+  if (order < 1) return;
+  delta[0] = front_angle;
+  for (int i = 1; i < order; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    delta[k] = std::atan(wheelbases[i] * std::sin(delta[k - 1]) / wheelbases[i - 1]);
+  }
+}
+
+void integrate_chain(ChainAngles& delta, const double* wheelbases, int order,
+                     double lead_curvature, double ds, const ChainAngles& angle_bound) noexcept {
+  ChainAngles k1{}, k2{}, k3{}, k4{}, probe{};
+  const auto n = static_cast<std::size_t>(order);
+  chain_rates(delta, wheelbases, order, lead_curvature, k1);
+  for (std::size_t i = 0; i < n; ++i) probe[i] = delta[i] + 0.5 * ds * k1[i];
+  chain_rates(probe, wheelbases, order, lead_curvature, k2);
+  for (std::size_t i = 0; i < n; ++i) probe[i] = delta[i] + 0.5 * ds * k2[i];
+  chain_rates(probe, wheelbases, order, lead_curvature, k3);
+  for (std::size_t i = 0; i < n; ++i) probe[i] = delta[i] + ds * k3[i];
+  chain_rates(probe, wheelbases, order, lead_curvature, k4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double next = delta[i] + ds / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    delta[i] = std::clamp(next, -angle_bound[i], angle_bound[i]);
+  }
+}
+
+}  // namespace smoothsteer

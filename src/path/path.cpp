@@ -1,0 +1,218 @@
+//! Path factories, their validation, assembly and evaluation.
+
+#include "smoothsteer/path/path.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "path_detail.hpp"
+#include "smoothsteer/math/angles.hpp"
+
+namespace smoothsteer {
+namespace {
+
+//! G1 tolerances of from_segments; generous against rounding, tight against real gaps.
+constexpr double kPositionTolerance_m = 1e-6;
+constexpr double kHeadingTolerance_rad = 1e-6;
+//! Waypoints closer than this are duplicates: the chord-length parameter would degenerate.
+constexpr double kDuplicateDistance_m = 1e-9;
+
+[[noreturn]] void fail(const std::string& message) {
+  throw std::invalid_argument(message);
+}
+
+void require_finite(const char* where, const std::string& field, double value) {
+  if (!std::isfinite(value)) {
+    fail(std::string(where) + ": " + field + " = " + detail::format_number(value) +
+         " must be finite");
+  }
+}
+
+void require_positive(const char* where, const std::string& field, double value) {
+  if (!std::isfinite(value) || !(value > 0.0)) {
+    fail(std::string(where) + ": " + field + " = " + detail::format_number(value) +
+         " must be finite and > 0");
+  }
+}
+
+void validate_segment(const PathSegment& segment, std::size_t index) {
+  constexpr const char* where = "Path::from_segments";
+  const std::string name = "segments[" + std::to_string(index) + "]";
+  require_positive(where, name + ".length", segment.length);
+  if (segment.kind == PathSegment::Kind::cubic) {
+    for (std::size_t i = 0; i < 4; ++i) {
+      require_finite(where, name + ".x_coefficients[" + std::to_string(i) + "]",
+                     segment.x_coefficients[i]);
+      require_finite(where, name + ".y_coefficients[" + std::to_string(i) + "]",
+                     segment.y_coefficients[i]);
+    }
+    require_positive(where, name + ".t_end", segment.t_end);
+    const double computed = detail::cubic_arc_length(segment, segment.t_end);
+    if (std::abs(computed - segment.length) > 1e-6 * (1.0 + computed)) {
+      fail(std::string(where) + ": " + name + ".length = " + detail::format_number(segment.length) +
+           " must match the arc length of the coefficients, " + detail::format_number(computed));
+    }
+    return;
+  }
+  require_finite(where, name + ".start.x", segment.start.x);
+  require_finite(where, name + ".start.y", segment.start.y);
+  require_finite(where, name + ".start_heading_rad", segment.start_heading_rad);
+  require_finite(where, name + ".curvature", segment.curvature);
+  if (segment.kind == PathSegment::Kind::arc && segment.curvature == 0.0) {
+    fail(std::string(where) + ": " + name + ".curvature = 0 must be nonzero for an arc");
+  }
+  if (segment.kind == PathSegment::Kind::line && segment.curvature != 0.0) {
+    fail(std::string(where) + ": " + name +
+         ".curvature = " + detail::format_number(segment.curvature) + " must be 0 for a line");
+  }
+}
+
+void check_joint(const PathSegment& before, std::size_t before_index, const PathSegment& after,
+                 std::size_t after_index) {
+  const PathPoint end = before.evaluate_parameter(before.parameter_end());
+  const PathPoint begin = after.evaluate_parameter(0.0);
+  const std::string joint = "segments[" + std::to_string(after_index) + "] (after segments[" +
+                            std::to_string(before_index) + "])";
+  const double gap = norm(begin.position - end.position);
+  if (!(gap <= kPositionTolerance_m)) {
+    fail("Path::from_segments: " + joint + " starts " + detail::format_number(gap) +
+         " m from the previous end; G1 continuity needs <= 1e-06 m");
+  }
+  const double kink = std::abs(wrap_angle(begin.heading_rad - end.heading_rad));
+  if (!(kink <= kHeadingTolerance_rad)) {
+    fail("Path::from_segments: " + joint + " heading jumps by " + detail::format_number(kink) +
+         " rad; G1 continuity needs <= 1e-06 rad");
+  }
+}
+
+}  // namespace
+
+std::string detail::format_number(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  return std::string(buffer, result.ptr);
+}
+
+Path Path::straight_line(Vec2 start, double heading_rad, double length_m) {
+  constexpr const char* where = "Path::straight_line";
+  require_finite(where, "start.x", start.x);
+  require_finite(where, "start.y", start.y);
+  require_finite(where, "heading_rad", heading_rad);
+  require_positive(where, "length_m", length_m);
+  return assemble({PathSegment::make_line(start, heading_rad, length_m)}, false);
+}
+
+Path Path::circle(Vec2 center, double radius_m, bool counter_clockwise, double start_angle_rad) {
+  constexpr const char* where = "Path::circle";
+  require_finite(where, "center.x", center.x);
+  require_finite(where, "center.y", center.y);
+  require_positive(where, "radius_m", radius_m);
+  require_finite(where, "start_angle_rad", start_angle_rad);
+  const double turn = counter_clockwise ? 1.0 : -1.0;
+  const Vec2 start = center + radius_m * unit_from_heading(start_angle_rad);
+  const double heading = wrap_angle(start_angle_rad + turn * 0.5 * pi);
+  return assemble({PathSegment::make_arc(start, heading, turn / radius_m, 2.0 * pi * radius_m)},
+                  true);
+}
+
+Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
+  constexpr const char* where = "Path::from_waypoints";
+  for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    require_finite(where, "waypoints[" + std::to_string(i) + "].x", waypoints[i].x);
+    require_finite(where, "waypoints[" + std::to_string(i) + "].y", waypoints[i].y);
+  }
+  if (waypoints.size() < 2) {
+    fail(std::string(where) + ": waypoints.size() = " + std::to_string(waypoints.size()) +
+         " must be >= 2 (at least 2 distinct points)");
+  }
+  // Rejecting consecutive duplicates also guarantees >= 2 distinct points.
+  for (std::size_t i = 1; i < waypoints.size(); ++i) {
+    const double gap = norm(waypoints[i] - waypoints[i - 1]);
+    if (!(gap >= kDuplicateDistance_m)) {
+      fail(std::string(where) + ": waypoints[" + std::to_string(i - 1) + "] and waypoints[" +
+           std::to_string(i) + "] are " + detail::format_number(gap) +
+           " m apart; consecutive waypoints must be >= 1e-09 m apart");
+    }
+  }
+  if (waypoints.size() == 2) {
+    const Vec2 chord = waypoints[1] - waypoints[0];
+    return assemble(
+        {PathSegment::make_line(waypoints[0], std::atan2(chord.y, chord.x), norm(chord))}, false);
+  }
+  return assemble(detail::natural_cubic_spline(waypoints), false);
+}
+
+Path Path::from_segments(std::vector<PathSegment> segments, bool closed) {
+  if (segments.empty()) {
+    fail("Path::from_segments: segments is empty; need at least 1 segment");
+  }
+  for (std::size_t i = 0; i < segments.size(); ++i) validate_segment(segments[i], i);
+  for (std::size_t i = 1; i < segments.size(); ++i) {
+    check_joint(segments[i - 1], i - 1, segments[i], i);
+  }
+  if (closed) check_joint(segments.back(), segments.size() - 1, segments.front(), 0);
+  return assemble(std::move(segments), closed);
+}
+
+Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
+  Path path;
+  path.closed_ = closed;
+  path.bounds_.reserve(segments.size());
+  double s = 0.0;
+  for (PathSegment& segment : segments) {
+    segment.s0 = s;
+    s += segment.length;
+    // Every point of a curve lies within half its length (along the curve) of its middle.
+    SegmentBound bound{segment.evaluate_at(0.5 * segment.length).position, 0.5 * segment.length};
+    if (segment.kind == PathSegment::Kind::arc) {
+      path.max_abs_curvature_ = std::max(path.max_abs_curvature_, std::abs(segment.curvature));
+      const double radius = 1.0 / std::abs(segment.curvature);
+      if (radius < bound.radius) {
+        const Vec2 forward = unit_from_heading(segment.start_heading_rad);
+        bound = {segment.start + (1.0 / segment.curvature) * Vec2{-forward.y, forward.x}, radius};
+      }
+    } else if (segment.kind == PathSegment::Kind::cubic) {
+      // Sampled maximum: exact at the samples, a close estimate in between.
+      constexpr int kSamples = 32;
+      for (int i = 0; i <= kSamples; ++i) {
+        const double t = segment.t_end * static_cast<double>(i) / kSamples;
+        path.max_abs_curvature_ =
+            std::max(path.max_abs_curvature_, std::abs(segment.evaluate_parameter(t).curvature));
+      }
+    }
+    path.bounds_.push_back(bound);
+  }
+  path.length_ = s;
+  path.start_ = segments.front().evaluate_parameter(0.0);
+  path.end_ = segments.back().evaluate_parameter(segments.back().parameter_end());
+  path.segments_ = std::move(segments);
+  return path;
+}
+
+PathPoint Path::evaluate(double arc_length_m) const noexcept {
+  if (segments_.empty()) return {};
+  double s = arc_length_m;
+  if (closed_) {
+    s = std::fmod(s, length_);
+    if (s < 0.0) s += length_;
+    if (s >= length_) s = 0.0;
+  } else if (s < 0.0) {
+    return {start_.position + s * unit_from_heading(start_.heading_rad), start_.heading_rad, 0.0};
+  } else if (s > length_) {
+    return {end_.position + (s - length_) * unit_from_heading(end_.heading_rad), end_.heading_rad,
+            0.0};
+  }
+  const auto after =
+      std::upper_bound(segments_.begin(), segments_.end(), s,
+                       [](double value, const PathSegment& segment) { return value < segment.s0; });
+  const std::size_t index =
+      after == segments_.begin() ? 0 : static_cast<std::size_t>(after - segments_.begin()) - 1;
+  const PathSegment& segment = segments_[index];
+  return segment.evaluate_at(s - segment.s0);
+}
+
+}  // namespace smoothsteer

@@ -1,0 +1,33 @@
+#pragma once
+//! \file path_detail.hpp
+//! Internals shared by the files of src/path/ (not installed).
+
+#include <string>
+#include <vector>
+
+#include "smoothsteer/path/path.hpp"
+
+namespace smoothsteer::detail {
+
+//! Shortest round-trip text of a number, for validation messages.
+std::string format_number(double value);
+
+//! Natural cubic spline through >= 3 validated waypoints (finite, no consecutive duplicates),
+//! chord-length parametrized; one cubic segment per pair of consecutive waypoints.
+std::vector<PathSegment> natural_cubic_spline(const std::vector<Vec2>& waypoints);
+
+// Cubic segment internals (cubic_segment.cpp), called by PathSegment's dispatchers.
+PathPoint cubic_point(const PathSegment& segment, double t) noexcept;
+double cubic_arc_length(const PathSegment& segment, double t) noexcept;
+double cubic_parameter_at(const PathSegment& segment, double local_s) noexcept;
+SegmentProjection cubic_project(const PathSegment& segment, Vec2 query,
+                                double warm_parameter) noexcept;
+
+//! Signed distance with the side of `offset` relative to `tangent` (left positive). A point
+//! straight ahead or behind counts as left; it only happens on clamped segment ends.
+inline double signed_distance(Vec2 tangent, Vec2 offset) noexcept {
+  const double distance = norm(offset);
+  return cross(tangent, offset) < 0.0 ? -distance : distance;
+}
+
+}  // namespace smoothsteer::detail

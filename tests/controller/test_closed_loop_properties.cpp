@@ -1,0 +1,121 @@
+// Seeded random closed loops on the kinematic model: from up to 100 m away with any heading, for
+// n in {0..4}, on lines, circles and random smooth spline paths. Properties: no NaN, convergence
+// to |e| < 1 cm, and for n >= 1 the steering angle and rate bounds of the invariant sets.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/sim/kinematic_closed_loop.hpp"
+#include "support/property.hpp"
+#include "support/random_setup.hpp"
+
+namespace smoothsteer {
+namespace {
+
+using namespace smoothsteer::testing;
+
+struct LoopCase {
+  ControllerParameters parameters;
+  std::shared_ptr<const Path> path;
+  PathKind kind = PathKind::line;
+  Pose2 start;
+  double speed = 5.0;
+  std::string text;
+};
+
+LoopCase random_case(std::uint64_t seed, double speed_sign) {
+  Random random(seed);
+  LoopCase c;
+  const int order = random.integer(0, 4);
+  c.parameters = random_parameters(random, order, random.uniform(0.35, 0.6));
+  c.kind = static_cast<PathKind>(random.integer(0, 2));
+  // Path curvature is a matched disturbance on the lead wheel: keep it inside k_rob kbar_n.
+  c.path = random_path(random, c.kind, 0.5 * c.parameters.k_rob * c.parameters.lead_curvature_bound);
+  const PathPoint anchor = c.path->evaluate(random.uniform(0.0, 0.3) * c.path->length());
+  c.start.position = anchor.position + Vec2{random.uniform(-100.0, 100.0), random.uniform(-100.0, 100.0)};
+  c.start.heading_rad = random.uniform(-pi, pi);
+  c.speed = speed_sign * random.uniform(1.0, 15.0);
+  std::ostringstream text;
+  text << seed_message(seed) << " " << describe(c.parameters) << " path=" << to_string(c.kind)
+       << " start=(" << c.start.position.x << "," << c.start.position.y << ","
+       << c.start.heading_rad << ") v=" << c.speed;
+  c.text = text.str();
+  return c;
+}
+
+//! Distance budget: far start + a few turning circles + settling of the chain lags.
+double duration_for(const LoopCase& c) {
+  const double distance = 300.0 + 20.0 / c.parameters.lead_curvature_bound;
+  return distance / std::abs(c.speed);
+}
+
+void check_loop(const LoopCase& c, double curvature_disturbance_fraction = 0.0) {
+  SCOPED_TRACE(c.text);
+  LeadWheelController controller(c.parameters, c.path);
+  controller.set_matched_disturbance(curvature_disturbance_fraction * c.parameters.k_rob *
+                                     c.parameters.lead_curvature_bound);
+  KinematicLoopOptions options;
+  options.wheelbase_m = c.parameters.vehicle_wheelbase_m;
+  options.speed_mps = c.speed;
+  options.duration_s = duration_for(c);
+  // n = 0 is the discontinuous Dubins law sampled once per period: its chattering band is
+  // O(kbar (v dt)^2), so its loop runs with |v| dt <= 5 cm (docs/controller.md).
+  if (c.parameters.order == 0) options.period_s = std::min(0.02, 0.05 / std::abs(c.speed));
+  const KinematicLoopResult result = run_kinematic_closed_loop(controller, c.start, options);
+  ASSERT_EQ(result.status, Status::ok);
+  EXPECT_FALSE(result.any_non_finite);
+  // Converged: |e| < 1 cm over the last 5 s.
+  double tail_error = 0.0;
+  const double tail_start = options.duration_s - 5.0;
+  for (const KinematicTraceSample& sample : result.trace) {
+    if (sample.time_s >= tail_start) {
+      tail_error = std::max(tail_error, std::abs(sample.output.diagnostics.lateral_error_m));
+    }
+  }
+  EXPECT_LT(tail_error, 0.01);
+  if (c.parameters.order >= 1) {
+    const ChainBounds& bounds = controller.bounds();
+    const double rate_bound = bounds.steering_rate_per_meter * std::abs(c.speed);
+    EXPECT_LE(result.max_abs_steering_rad, bounds.steering_angle_rad * (1.0 + 1e-12));
+    EXPECT_LE(result.max_abs_steering_rate_radps, rate_bound * (1.0 + 1e-9));
+    EXPECT_LE(result.max_abs_steering_difference_rate_radps, rate_bound * (1.0 + 1e-6));
+  }
+}
+
+TEST(ClosedLoopProperties, ConvergesFromAnyPoseWithinBounds) {
+  for (int k = 0; k < property_cases(40); ++k) check_loop(random_case(case_seed(k), 1.0));
+}
+
+TEST(ClosedLoopProperties, ReversingConvergesBackwards) {
+  for (int k = 0; k < property_cases(20); ++k) check_loop(random_case(case_seed(k) + 1, -1.0));
+}
+
+TEST(ClosedLoopProperties, MatchedDisturbanceIsRejected) {
+  for (int k = 0; k < property_cases(20); ++k) {
+    Random random(case_seed(k) + 2);
+    check_loop(random_case(case_seed(k) + 2, 1.0), random.uniform(-0.95, 0.95));
+  }
+}
+
+TEST(ClosedLoopProperties, PrintedSurfaceCirclesFromFarWhileGlobalConverges) {
+  // paper-notes §4: the printed surface has no zero for |e| > 2 / ((1 - k_rob) kbar).
+  auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 1000.0));
+  ControllerParameters parameters;  // n = 2, kbar_l = 0.2 1/m -> 2/((1-k_rob) kbar) = 14.3 m
+  const Pose2 start{{0.0, 40.0}, 0.0};
+  KinematicLoopOptions options;
+  options.duration_s = 60.0;
+  parameters.surface = SlidingSurface::paper;
+  LeadWheelController printed(parameters, path);
+  const KinematicLoopResult circling = run_kinematic_closed_loop(printed, start, options);
+  EXPECT_GT(std::abs(circling.final_lateral_error_m), 5.0);
+  parameters.surface = SlidingSurface::global;
+  LeadWheelController global(parameters, path);
+  const KinematicLoopResult converging = run_kinematic_closed_loop(global, start, options);
+  EXPECT_LT(std::abs(converging.final_lateral_error_m), 0.01);
+}
+
+}  // namespace
+}  // namespace smoothsteer

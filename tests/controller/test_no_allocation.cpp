@@ -1,0 +1,54 @@
+// update() performs no heap allocation: a counting global operator new observes every
+// allocation made by this test binary.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+
+namespace {
+std::atomic<long> allocation_count{0};
+}
+
+void* operator new(std::size_t size) {
+  allocation_count.fetch_add(1, std::memory_order_relaxed);
+  if (void* pointer = std::malloc(size == 0 ? 1 : size)) return pointer;
+  throw std::bad_alloc();
+}
+void operator delete(void* pointer) noexcept { std::free(pointer); }
+void operator delete(void* pointer, std::size_t) noexcept { std::free(pointer); }
+
+namespace smoothsteer {
+namespace {
+
+TEST(RealTime, UpdateDoesNotAllocate) {
+  std::vector<Vec2> waypoints;
+  for (int k = 0; k < 2000; ++k) waypoints.push_back({k * 1.0, 10.0 * std::sin(k * 0.01)});
+  auto path = std::make_shared<const Path>(Path::from_waypoints(waypoints));
+  for (int order = 0; order <= 4; ++order) {
+    ControllerParameters parameters;
+    parameters.order = order;
+    parameters.lead_curvature_bound = 0.05;
+    LeadWheelController controller(parameters, path);
+    ControllerOutput output;
+    Vec2 position{5.0, 30.0};
+    const long before = allocation_count.load();
+    for (int k = 0; k < 5000; ++k) {
+      // Includes far-away global searches, warm starts, reversing and invalid input.
+      const double speed = k < 4000 ? 10.0 : -3.0;
+      controller.update({position, 0.0, speed, 0.0, 0.02}, output);
+      controller.update({{position.x, std::nan("")}, 0.0, speed, 0.0, 0.02}, output);
+      position.x += 0.2;
+      position.y *= 0.999;
+    }
+    EXPECT_EQ(allocation_count.load() - before, 0) << "order " << order;
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer

@@ -1,0 +1,129 @@
+// Every invalid parameter and input gets its own error that names the field, the value and the
+// rule; update() never emits NaN.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+
+namespace smoothsteer {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+std::shared_ptr<const Path> line() {
+  return std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 100.0));
+}
+
+void expect_rejected(const ControllerParameters& parameters, const std::string& field,
+                     const std::string& rule) {
+  try {
+    LeadWheelController controller(parameters, line());
+    FAIL() << "accepted invalid parameters; expected an error about " << field;
+  } catch (const std::invalid_argument& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(field), std::string::npos) << message;
+    EXPECT_NE(message.find(rule), std::string::npos) << message;
+  }
+}
+
+TEST(ParameterValidation, DefaultsAreValid) { EXPECT_NO_THROW(ControllerParameters{}.validate()); }
+
+TEST(ParameterValidation, RejectsEachInvalidField) {
+  ControllerParameters p;
+  p.order = -1;
+  expect_rejected(p, "order = -1", "[0, 8]");
+  p = {};
+  p.order = 9;
+  expect_rejected(p, "order = 9", "[0, 8]");
+  p = {};
+  p.vehicle_wheelbase_m = 0.0;
+  expect_rejected(p, "vehicle_wheelbase_m = 0", "> 0");
+  p = {};
+  p.vehicle_wheelbase_m = nan;
+  expect_rejected(p, "vehicle_wheelbase_m = nan", "finite");
+  p = {};
+  p.wheelbases_m[0] = -2.5;
+  expect_rejected(p, "wheelbases_m[0] (lambda_1) = -2.5", "> 0");
+  p = {};
+  p.wheelbases_m[1] = 2.7;
+  expect_rejected(p, "wheelbases_m[1] (lambda_2) = 2.7", "lambda_l < lambda_veh");
+  p = {};
+  p.lead_curvature_bound = -0.1;
+  expect_rejected(p, "lead_curvature_bound = -0.1", "> 0");
+  p = {};
+  p.k_rob = 1.0;
+  expect_rejected(p, "k_rob = 1", "[0, 1)");
+  p = {};
+  p.k_rob = 3.0;  // the paper's printed value (paper-notes §5)
+  expect_rejected(p, "k_rob = 3", "[0, 1)");
+  p = {};
+  p.k_rob = -0.1;
+  expect_rejected(p, "k_rob = -0.1", "[0, 1)");
+  p = {};
+  p.approach_angle_rad = 2.0;
+  expect_rejected(p, "approach_angle_rad = 2", "(0, pi/2]");
+  p = {};
+  p.lead_curvature_bound = 1.5;  // kbar_2 lambda_2 = 1.5 >= 1
+  expect_rejected(p, "kbar_2 * lambda_2 = 1.5", "must be < 1");
+  p = {};
+  p.lead_curvature_bound = 0.9;  // kbar_2 lambda_2 = 0.9, kbar_1 = 2.06, kbar_1 lambda_1 > 1
+  expect_rejected(p, "kbar_1 * lambda_1", "must be < 1");
+}
+
+TEST(ParameterValidation, RejectsNullPath) {
+  EXPECT_THROW(LeadWheelController(ControllerParameters{}, nullptr), std::invalid_argument);
+}
+
+TEST(InputValidation, InvalidInputReturnsErrorAndKeepsOutput) {
+  LeadWheelController controller(ControllerParameters{}, line());
+  ControllerOutput output;
+  ASSERT_EQ(controller.update({{0.0, 3.0}, 0.0, 5.0, 0.0, 0.02}, output), Status::ok);
+  const ControllerOutput before = output;
+  const ControllerInput bad_inputs[] = {
+      {{nan, 0.0}, 0.0, 5.0, 0.0, 0.02}, {{0.0, inf}, 0.0, 5.0, 0.0, 0.02},
+      {{0.0, 0.0}, nan, 5.0, 0.0, 0.02}, {{0.0, 0.0}, 0.0, nan, 0.0, 0.02},
+      {{0.0, 0.0}, 0.0, inf, 0.0, 0.02}, {{0.0, 0.0}, 0.0, 5.0, nan, 0.02},
+      {{0.0, 0.0}, 0.0, 5.0, 0.0, 0.0},  {{0.0, 0.0}, 0.0, 5.0, 0.0, -0.02},
+      {{0.0, 0.0}, 0.0, 5.0, 0.0, nan},
+  };
+  for (const ControllerInput& input : bad_inputs) {
+    EXPECT_EQ(controller.update(input, output), Status::invalid_input);
+    EXPECT_EQ(output.steering_angle_rad, before.steering_angle_rad);
+    EXPECT_TRUE(std::isfinite(output.steering_angle_rad));
+  }
+  // The controller keeps working afterwards.
+  EXPECT_EQ(controller.update({{0.0, 3.0}, 0.0, 5.0, 0.0, 0.02}, output), Status::ok);
+}
+
+TEST(InputValidation, ZeroSpeedFreezesTheChain) {
+  LeadWheelController controller(ControllerParameters{}, line());
+  ControllerOutput output;
+  for (int k = 0; k < 20; ++k) controller.update({{0.0, 3.0}, 0.0, 5.0, 0.0, 0.02}, output);
+  const ChainAngles frozen = controller.chain_angles();
+  for (int k = 0; k < 20; ++k) {
+    ASSERT_EQ(controller.update({{0.0, 3.0}, 0.0, 0.0, 0.0, 0.02}, output), Status::ok);
+  }
+  EXPECT_EQ(controller.chain_angles(), frozen);
+  EXPECT_EQ(output.steering_rate_radps, 0.0);
+}
+
+TEST(Reset, InitialisesFromMeasuredSteeringAngleInsideTheBound) {
+  LeadWheelController controller(ControllerParameters{}, line());
+  controller.reset(0.1);
+  EXPECT_NEAR(controller.vehicle_steering_angle(controller.chain_angles()[0]), 0.1, 1e-12);
+  controller.reset(1.4);  // beyond the bound: clamped into the invariant set
+  EXPECT_LE(std::abs(controller.vehicle_steering_angle(controller.chain_angles()[0])),
+            controller.bounds().steering_angle_rad + 1e-12);
+  controller.reset(nan);
+  EXPECT_EQ(controller.chain_angles()[0], 0.0);
+}
+
+}  // namespace
+}  // namespace smoothsteer
