@@ -76,7 +76,9 @@ void check_loop(const LoopCase& c, double curvature_disturbance_fraction = 0.0) 
     }
   }
   EXPECT_LT(tail_error, 0.01);
-  if (c.parameters.order >= 1) {
+  // With a disturbance the lead wheel turns with kappa_n + kappa_d, beyond kbar_n: the bounds of
+  // kbar_n no longer apply (Sec. III item 2 sizes kbar_l for it), so only convergence is checked.
+  if (c.parameters.order >= 1 && curvature_disturbance_fraction == 0.0) {
     const ChainBounds& bounds = controller.bounds();
     const double rate_bound = bounds.steering_rate_per_meter * std::abs(c.speed);
     EXPECT_LE(result.max_abs_steering_rad, bounds.steering_angle_rad * (1.0 + 1e-12));
