@@ -82,7 +82,8 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
                  geometry);
   const auto lead = static_cast<std::size_t>(n);
   LeadWheelState state;
-  state.projection = path_->project(geometry.position[lead], lead_hint_);
+  static constexpr Path::ProjectionOptions lead_options{.compute_arc_length = false};
+  state.projection = path_->project(geometry.position[lead], lead_hint_, lead_options);
   state.relative_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
   double target_offset = 0.0;
   if (parameters_.cornering_target == CorneringTarget::rear_axle) {

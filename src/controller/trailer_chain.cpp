@@ -77,14 +77,17 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
 
 void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
                  double lead_curvature, ChainAngles& rates) noexcept {
+  // One tan per angle: inside the invariant sets |delta_i| < pi/2, so 1/cos = sqrt(1 + tan^2).
+  ChainAngles tangent{};
+  for (std::size_t k = 0; k < static_cast<std::size_t>(order); ++k) tangent[k] = std::tan(delta[k]);
   double distance_ratio = 1.0;  // ds_{i-1} / ds
   for (int i = 0; i < order; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const double next_curvature =
-        (i + 1 < order) ? std::tan(delta[k + 1]) / wheelbases[i + 1] : lead_curvature;
-    const double c = std::cos(delta[k]);
-    rates[k] = distance_ratio * (next_curvature / c - std::tan(delta[k]) / wheelbases[i]);
-    distance_ratio /= c;
+        (i + 1 < order) ? tangent[k + 1] / wheelbases[i + 1] : lead_curvature;
+    const double secant = std::sqrt(1.0 + tangent[k] * tangent[k]);
+    rates[k] = distance_ratio * (next_curvature * secant - tangent[k] / wheelbases[i]);
+    distance_ratio *= secant;
   }
 }
 
@@ -130,20 +133,41 @@ void stationary_chain(double front_angle, const double* wheelbases, int order,
   }
 }
 
+namespace {
+
+//! d tan(delta_i) / ds = (1 + tan^2 delta_i) d delta_i / ds, written in t_i = tan(delta_i) only:
+//! the RK4 stages then need square roots but no trigonometric calls.
+void tangent_rates(const ChainAngles& tangent, const double* wheelbases, int order,
+                   double lead_curvature, ChainAngles& rates) noexcept {
+  double distance_ratio = 1.0;  // ds_{i-1} / ds
+  for (int i = 0; i < order; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const double next_curvature =
+        (i + 1 < order) ? tangent[k + 1] / wheelbases[i + 1] : lead_curvature;
+    const double squared = 1.0 + tangent[k] * tangent[k];
+    const double secant = std::sqrt(squared);
+    rates[k] = squared * distance_ratio * (next_curvature * secant - tangent[k] / wheelbases[i]);
+    distance_ratio *= secant;
+  }
+}
+
+}  // namespace
+
 void integrate_chain(ChainAngles& delta, const double* wheelbases, int order,
                      double lead_curvature, double ds, const ChainAngles& angle_bound) noexcept {
-  ChainAngles k1{}, k2{}, k3{}, k4{}, probe{};
+  ChainAngles t{}, k1{}, k2{}, k3{}, k4{}, probe{};
   const auto n = static_cast<std::size_t>(order);
-  chain_rates(delta, wheelbases, order, lead_curvature, k1);
-  for (std::size_t i = 0; i < n; ++i) probe[i] = delta[i] + 0.5 * ds * k1[i];
-  chain_rates(probe, wheelbases, order, lead_curvature, k2);
-  for (std::size_t i = 0; i < n; ++i) probe[i] = delta[i] + 0.5 * ds * k2[i];
-  chain_rates(probe, wheelbases, order, lead_curvature, k3);
-  for (std::size_t i = 0; i < n; ++i) probe[i] = delta[i] + ds * k3[i];
-  chain_rates(probe, wheelbases, order, lead_curvature, k4);
+  for (std::size_t i = 0; i < n; ++i) t[i] = std::tan(delta[i]);
+  tangent_rates(t, wheelbases, order, lead_curvature, k1);
+  for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + 0.5 * ds * k1[i];
+  tangent_rates(probe, wheelbases, order, lead_curvature, k2);
+  for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + 0.5 * ds * k2[i];
+  tangent_rates(probe, wheelbases, order, lead_curvature, k3);
+  for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + ds * k3[i];
+  tangent_rates(probe, wheelbases, order, lead_curvature, k4);
   for (std::size_t i = 0; i < n; ++i) {
-    const double next = delta[i] + ds / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-    delta[i] = std::clamp(next, -angle_bound[i], angle_bound[i]);
+    const double next = t[i] + ds / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    delta[i] = std::clamp(std::atan(next), -angle_bound[i], angle_bound[i]);
   }
 }
 

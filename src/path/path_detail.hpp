@@ -20,8 +20,8 @@ std::vector<PathSegment> natural_cubic_spline(const std::vector<Vec2>& waypoints
 PathPoint cubic_point(const PathSegment& segment, double t) noexcept;
 double cubic_arc_length(const PathSegment& segment, double t) noexcept;
 double cubic_parameter_at(const PathSegment& segment, double local_s) noexcept;
-SegmentProjection cubic_project(const PathSegment& segment, Vec2 query,
-                                double warm_parameter) noexcept;
+SegmentProjection cubic_project(const PathSegment& segment, Vec2 query, double warm_parameter,
+                                bool exhaustive, bool with_arc_length) noexcept;
 
 //! Signed distance with the side of `offset` relative to `tangent` (left positive). A point
 //! straight ahead or behind counts as left; it only happens on clamped segment ends.

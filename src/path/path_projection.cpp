@@ -33,7 +33,8 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
     bool settled = false;
     SegmentProjection local;
     for (std::size_t step = 0; step < options.max_local_steps; ++step) {
-      local = segments_[index].project_local(point, warm);
+      local = segments_[index].project_local(point, warm, /*exhaustive=*/false,
+                                             options.compute_arc_length);
       const int wanted = local.clamped_at_end ? 1 : (local.clamped_at_start ? -1 : 0);
       if (wanted == 0 || wanted == -direction) {
         settled = true;

@@ -155,7 +155,8 @@ double PathSegment::parameter_at(double local_s) const noexcept {
   return kind == Kind::cubic ? detail::cubic_parameter_at(*this, clamped) : clamped;
 }
 
-SegmentProjection PathSegment::project_local(Vec2 query, double warm_parameter) const noexcept {
+SegmentProjection PathSegment::project_local(Vec2 query, double warm_parameter, bool exhaustive,
+                                             bool with_arc_length) const noexcept {
   switch (kind) {
     case Kind::line:
       return project_line(*this, query);
@@ -164,7 +165,7 @@ SegmentProjection PathSegment::project_local(Vec2 query, double warm_parameter) 
       return curvature != 0.0 ? project_arc(*this, query, warm_parameter)
                               : project_line(*this, query);
     case Kind::cubic:
-      return detail::cubic_project(*this, query, warm_parameter);
+      return detail::cubic_project(*this, query, warm_parameter, exhaustive, with_arc_length);
   }
   return project_line(*this, query);
 }

@@ -64,7 +64,8 @@ void chain_geometry(Vec2 rear_position, double rear_heading, const ChainAngles& 
 void stationary_chain(double front_angle, const double* wheelbases, int order,
                       ChainAngles& delta) noexcept;
 
-//! One RK4 step of the chain over rear arc length ds with constant lead curvature; clamps every
+//! One RK4 step of the chain over rear arc length ds with constant lead curvature, integrated in
+//! tan(delta_i) (no trigonometry inside the stages); clamps every
 //! angle to its invariant set afterwards (the exact flow never leaves it; this removes the
 //! integration error at the boundary).
 void integrate_chain(ChainAngles& delta, const double* wheelbases, int order,

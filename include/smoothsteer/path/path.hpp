@@ -57,6 +57,10 @@ class Path {
     //! The warm-started local walk visits at most this many segments before falling back to a
     //! global search.
     std::size_t max_local_steps = 64;
+    //! false skips the arc length of the closest point (arc_length_m is then only meaningful
+    //! on lines and arcs); saves the quadrature on splines when only e, heading and curvature
+    //! are needed, as for the controller's lead wheel.
+    bool compute_arc_length = true;
   };
 
   //! An infinite-looking straight line: from `start` along `heading_rad`, `length_m` long, with

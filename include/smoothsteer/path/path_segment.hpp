@@ -70,8 +70,11 @@ struct PathSegment {
   double parameter_at(double local_s) const noexcept;
 
   //! Closest point to `query` on this segment. `warm_parameter` seeds the cubic search and
-  //! breaks the tie for a query at an arc's center.
-  SegmentProjection project_local(Vec2 query, double warm_parameter) const noexcept;
+  //! breaks the tie for a query at an arc's center. `exhaustive` = false searches a cubic from
+  //! the warm parameter only (the warm-started walk, where the query moved little); true adds
+  //! seeds at both ends and the middle to find the global minimum on the segment.
+  SegmentProjection project_local(Vec2 query, double warm_parameter, bool exhaustive = true,
+                                  bool with_arc_length = true) const noexcept;
 };
 
 }  // namespace smoothsteer

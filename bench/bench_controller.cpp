@@ -1,0 +1,81 @@
+// Cost of LeadWheelController::update for n = 0, 1, 2, 4 on a straight line and on a curved
+// 10 000-waypoint spline, while tracking (warm-started projection). Poses come from a recorded
+// closed loop so that only update() is timed. Figures: docs/benchmarks.md.
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "smoothsteer/smoothsteer.hpp"
+
+namespace {
+
+using namespace smoothsteer;
+
+std::shared_ptr<const Path> curved_path() {
+  static const std::shared_ptr<const Path> path = [] {
+    std::vector<Vec2> waypoints;
+    waypoints.reserve(10000);
+    for (int k = 0; k < 10000; ++k) {
+      const double x = 0.5 * k;
+      waypoints.push_back({x, 15.0 * std::sin(x / 40.0) + 4.0 * std::sin(x / 13.0)});
+    }
+    return std::make_shared<const Path>(Path::from_waypoints(waypoints));
+  }();
+  return path;
+}
+
+std::shared_ptr<const Path> straight_path() {
+  static const auto path =
+      std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 5000.0));
+  return path;
+}
+
+ControllerParameters parameters_of_order(int order) {
+  ControllerParameters parameters;
+  parameters.order = order;
+  parameters.lead_curvature_bound = 0.1;
+  return parameters;
+}
+
+//! Poses of a closed loop that starts 2 m off the path and then tracks it.
+std::vector<ControllerInput> recorded_inputs(const std::shared_ptr<const Path>& path, int order) {
+  LeadWheelController controller(parameters_of_order(order), path);
+  KinematicLoopOptions options;
+  options.speed_mps = 10.0;
+  options.duration_s = 200.0;
+  const KinematicLoopResult result = run_kinematic_closed_loop(controller, {{0.0, 2.0}, 0.0}, options);
+  std::vector<ControllerInput> inputs;
+  inputs.reserve(result.trace.size());
+  for (const KinematicTraceSample& sample : result.trace) {
+    inputs.push_back({sample.pose.position, sample.pose.heading_rad, options.speed_mps, 0.0,
+                      options.period_s});
+  }
+  return inputs;
+}
+
+void update_cost(benchmark::State& state, const std::shared_ptr<const Path>& path) {
+  const int order = static_cast<int>(state.range(0));
+  const std::vector<ControllerInput> inputs = recorded_inputs(path, order);
+  LeadWheelController controller(parameters_of_order(order), path);
+  ControllerOutput output;
+  std::size_t index = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(controller.update(inputs[index], output));
+    benchmark::DoNotOptimize(output.steering_angle_rad);
+    if (++index == inputs.size()) index = 0;
+  }
+  state.SetLabel("n=" + std::to_string(order));
+}
+
+void BM_UpdateStraightLine(benchmark::State& state) { update_cost(state, straight_path()); }
+void BM_UpdateCurvedPath10k(benchmark::State& state) { update_cost(state, curved_path()); }
+
+BENCHMARK(BM_UpdateStraightLine)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_UpdateCurvedPath10k)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Repetitions(5)
+    ->ReportAggregatesOnly(true);
+
+}  // namespace
