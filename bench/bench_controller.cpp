@@ -73,9 +73,23 @@ void update_cost(benchmark::State& state, const std::shared_ptr<const Path>& pat
 void BM_UpdateStraightLine(benchmark::State& state) { update_cost(state, straight_path()); }
 void BM_UpdateCurvedPath10k(benchmark::State& state) { update_cost(state, curved_path()); }
 
+//! Worst case: 30 m from the 10 000-segment path every projection is a global search.
+void BM_UpdateFarFromCurvedPath10k(benchmark::State& state) {
+  const int order = static_cast<int>(state.range(0));
+  LeadWheelController controller(parameters_of_order(order), curved_path());
+  ControllerOutput output;
+  double x = 0.0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(controller.update({{x, 60.0}, 0.0, 10.0, 0.0, 0.02}, output));
+    x = x < 4000.0 ? x + 0.2 : 0.0;
+  }
+  state.SetLabel("n=" + std::to_string(order));
+}
+
 BENCHMARK(BM_UpdateStraightLine)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Repetitions(5)
     ->ReportAggregatesOnly(true);
 BENCHMARK(BM_UpdateCurvedPath10k)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Repetitions(5)
     ->ReportAggregatesOnly(true);
+BENCHMARK(BM_UpdateFarFromCurvedPath10k)->Arg(2)->Repetitions(3)->ReportAggregatesOnly(true);
 
 }  // namespace

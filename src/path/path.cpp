@@ -186,6 +186,15 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
     }
     path.bounds_.push_back(bound);
   }
+  for (std::size_t first = 0; first < path.bounds_.size(); first += block_size) {
+    const std::size_t last = std::min(first + block_size, path.bounds_.size());
+    SegmentBound block{path.bounds_[(first + last) / 2].center, 0.0};
+    for (std::size_t i = first; i < last; ++i) {
+      block.radius = std::max(block.radius,
+                              norm(path.bounds_[i].center - block.center) + path.bounds_[i].radius);
+    }
+    path.block_bounds_.push_back(block);
+  }
   path.length_ = s;
   path.start_ = segments.front().evaluate_parameter(0.0);
   path.end_ = segments.back().evaluate_parameter(segments.back().parameter_end());

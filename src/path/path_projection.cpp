@@ -64,23 +64,49 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
 PathProjection Path::project_global(Vec2 point, ProjectionHint& hint) const noexcept {
   const std::size_t count = segments_.size();
   if (count == 0) return {};
-  // Upper bound first, so that the pruning below starts tight whatever the segment order.
-  double upper_bound = std::numeric_limits<double>::infinity();
-  for (const SegmentBound& bound : bounds_) {
-    upper_bound = std::min(upper_bound, norm(point - bound.center) + bound.radius);
-  }
+  // Nearest-first without sorting (no allocation): the block, and inside it the segment, with
+  // the smallest lower bound is projected first, so the pruning of all others starts tight.
   std::size_t best_index = ProjectionHint::none;
   SegmentProjection best;
-  for (std::size_t i = 0; i < count; ++i) {
-    const double threshold = best_index == ProjectionHint::none ? upper_bound : best.distance_m;
-    const double lower_bound = norm(point - bounds_[i].center) - bounds_[i].radius;
-    if (lower_bound > threshold) continue;
+  auto consider = [&](std::size_t i) {
+    if (best_index != ProjectionHint::none &&
+        norm(point - bounds_[i].center) - bounds_[i].radius > best.distance_m) {
+      return;
+    }
     const PathSegment& segment = segments_[i];
     const SegmentProjection local = segment.project_local(point, 0.5 * segment.parameter_end());
     if (best_index == ProjectionHint::none || local.distance_m < best.distance_m) {
       best = local;
       best_index = i;
     }
+  };
+  auto scan_block = [&](std::size_t b) {
+    const std::size_t first = b * block_size;
+    const std::size_t last = std::min(first + block_size, count);
+    std::size_t nearest = first;
+    double nearest_bound = std::numeric_limits<double>::infinity();
+    for (std::size_t i = first; i < last; ++i) {
+      const double lower_bound = norm(point - bounds_[i].center) - bounds_[i].radius;
+      if (lower_bound < nearest_bound) {
+        nearest_bound = lower_bound;
+        nearest = i;
+      }
+    }
+    consider(nearest);
+    for (std::size_t i = first; i < last; ++i) {
+      if (i != nearest) consider(i);
+    }
+  };
+  auto block_lower_bound = [&](std::size_t b) {
+    return norm(point - block_bounds_[b].center) - block_bounds_[b].radius;
+  };
+  std::size_t nearest_block = 0;
+  for (std::size_t b = 1; b < block_bounds_.size(); ++b) {
+    if (block_lower_bound(b) < block_lower_bound(nearest_block)) nearest_block = b;
+  }
+  scan_block(nearest_block);
+  for (std::size_t b = 0; b < block_bounds_.size(); ++b) {
+    if (b != nearest_block && block_lower_bound(b) <= best.distance_m) scan_block(b);
   }
   if (best_index == ProjectionHint::none) {  // only for a NaN query: keep the output defined
     best_index = 0;

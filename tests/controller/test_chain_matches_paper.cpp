@@ -155,5 +155,31 @@ TEST(ChainMatchesPaper, SecondDerivativeMatchesFiniteDifferenceForLongerChains) 
   }
 }
 
+TEST(ChainMatchesPaper, KappaLMaxNeedsTheSquareRoot) {
+  // Notes §2: eq. (kappalmax) with the square root makes the invariant set of delta_1 exactly
+  // [-dbar, dbar]; the printed form without it does not (and is dimensionally wrong).
+  for (int c = 0; c < property_cases(200); ++c) {
+    const auto seed = case_seed(c);
+    Random random(seed);
+    ControllerParameters parameters;
+    parameters.order = 2;
+    parameters.vehicle_wheelbase_m = random.uniform(2.0, 4.0);
+    parameters.wheelbases_m[1] = random.uniform(0.2, 0.9) * parameters.vehicle_wheelbase_m;
+    const double lambda_l = parameters.wheelbases_m[1];
+    parameters.wheelbases_m[0] = std::sqrt(parameters.vehicle_wheelbase_m * parameters.vehicle_wheelbase_m - lambda_l * lambda_l);
+    const double lambda = parameters.wheelbases_m[0];
+    const double dbar = random.uniform(0.1, 1.0);
+    const double s = std::sin(dbar);
+    parameters.lead_curvature_bound = s / std::sqrt(lambda * lambda + lambda_l * lambda_l * s * s);
+    SCOPED_TRACE(seed_message(seed));
+    ASSERT_TRUE(parameters.validation_error().empty()) << parameters.validation_error();
+    EXPECT_NEAR(compute_chain_bounds(parameters).angle[0], dbar, 1e-12);
+    const double printed = s / (lambda * lambda + lambda_l * lambda_l * s * s);
+    if (std::abs(lambda * lambda + lambda_l * lambda_l * s * s - 1.0) > 0.05) {
+      EXPECT_GT(std::abs(printed - parameters.lead_curvature_bound), 1e-3);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace smoothsteer

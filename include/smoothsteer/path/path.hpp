@@ -114,6 +114,10 @@ class Path {
 
   std::vector<PathSegment> segments_;
   std::vector<SegmentBound> bounds_;
+  //! Bounds of consecutive blocks of block_size segments: the global search skips whole blocks
+  //! first, so a far-away query costs O(N / block_size + block_size), not O(N).
+  static constexpr std::size_t block_size = 64;
+  std::vector<SegmentBound> block_bounds_;
   PathPoint start_;  //!< pose at s = 0, for the start extension
   PathPoint end_;    //!< pose at s = length(), for the end extension
   double length_ = 0.0;
