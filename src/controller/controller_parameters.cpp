@@ -46,6 +46,9 @@ std::string ControllerParameters::validation_error() const {
   if (!std::isfinite(k_rob) || k_rob < 0.0 || k_rob >= 1.0) {
     return describe("k_rob", k_rob, "must be in [0, 1) (eq. sigma divides by 1 - k_rob)");
   }
+  if (!std::isfinite(boundary_layer) || boundary_layer < 0.0) {
+    return describe("boundary_layer", boundary_layer, "must be finite and >= 0");
+  }
   if (!std::isfinite(approach_angle_rad) || approach_angle_rad <= 0.0 ||
       approach_angle_rad > std::numbers::pi / 2.0 + 1e-12) {
     return describe("approach_angle_rad", approach_angle_rad, "must be in (0, pi/2]");
@@ -71,6 +74,31 @@ std::string ControllerParameters::validation_error() const {
     kbar /= std::sqrt(1.0 - product * product);
   }
   return {};
+}
+
+bool ControllerParameters::is_valid() const noexcept {
+  // Mirrors validation_error() rule by rule (tests/tuning compares both on random inputs).
+  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (order < 0 || order > max_order || !positive(vehicle_wheelbase_m)) return false;
+  for (int i = 0; i < order; ++i) {
+    const double lambda = wheelbases_m[static_cast<std::size_t>(i)];
+    if (!positive(lambda) || (i >= 1 && lambda >= vehicle_wheelbase_m)) return false;
+  }
+  if (!positive(lead_curvature_bound)) return false;
+  if (!std::isfinite(k_rob) || k_rob < 0.0 || k_rob >= 1.0) return false;
+  if (!std::isfinite(boundary_layer) || boundary_layer < 0.0) return false;
+  if (!positive(approach_angle_rad) || approach_angle_rad > std::numbers::pi / 2.0 + 1e-12) {
+    return false;
+  }
+  if (!positive(max_substep_fraction) || max_substep_fraction > 1.0) return false;
+  if (max_substeps < 1 || max_substeps > 10000) return false;
+  double kbar = lead_curvature_bound;
+  for (int i = order; i >= 1; --i) {
+    const double product = kbar * wheelbases_m[static_cast<std::size_t>(i - 1)];
+    if (product >= 1.0) return false;
+    kbar /= std::sqrt(1.0 - product * product);
+  }
+  return true;
 }
 
 void ControllerParameters::validate() const {

@@ -61,6 +61,27 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   last_steering_angle_ = vehicle_steering_angle_of_chain();
 }
 
+Status LeadWheelController::retune(const ControllerParameters& parameters) noexcept {
+  if (!parameters.is_valid() || parameters.order != parameters_.order) {
+    return Status::invalid_input;
+  }
+  const int n = parameters.order;
+  const double steering = n > 0 ? vehicle_steering_angle_of_chain() : last_steering_angle_;
+  parameters_ = parameters;
+  bounds_ = compute_chain_bounds(parameters_);
+  chain_length_squared_ = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
+    chain_length_squared_ += lambda * lambda;
+  }
+  if (n > 0) angles_[0] = front_angle_from_vehicle(steering);
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
+  }
+  return Status::ok;
+}
+
 void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   direction_ = 1.0;
   rear_hint_.reset();

@@ -102,6 +102,16 @@ TEST(ClosedLoopProperties, MatchedDisturbanceIsRejected) {
   }
 }
 
+TEST(ClosedLoopProperties, BoundaryLayerKeepsBoundsAndConverges) {
+  for (int k = 0; k < property_cases(20); ++k) {
+    Random random(case_seed(k) + 3);
+    LoopCase c = random_case(case_seed(k) + 3, random.coin() ? 1.0 : -1.0);
+    c.parameters.boundary_layer = random.uniform(0.005, 0.05);
+    c.text += " boundary_layer=" + std::to_string(c.parameters.boundary_layer);
+    check_loop(c);
+  }
+}
+
 TEST(ClosedLoopProperties, PrintedSurfaceCirclesFromFarWhileGlobalConverges) {
   // paper-notes §4: the printed surface has no zero for |e| > 2 / ((1 - k_rob) kbar).
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 1000.0));

@@ -67,6 +67,9 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
   p.k_rob = -0.1;
   expect_rejected(p, "k_rob = -0.1", "[0, 1)");
   p = {};
+  p.boundary_layer = -0.01;
+  expect_rejected(p, "boundary_layer = -0.01", ">= 0");
+  p = {};
   p.approach_angle_rad = 2.0;
   expect_rejected(p, "approach_angle_rad = 2", "(0, pi/2]");
   p = {};

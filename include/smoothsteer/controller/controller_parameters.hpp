@@ -50,6 +50,11 @@ struct ControllerParameters {
   //! psi_max in (0, pi/2]: heading relative to the path with which the lead wheel approaches
   //! from far away. pi/2 gives the Dubins turn-straight-turn.
   double approach_angle_rad = std::numbers::pi / 2.0;
+  //! epsilon >= 0: width of a boundary layer around the switching surface, in the units of the
+  //! sliding variable (rad for the global law, m for the paper's). 0 is the paper's
+  //! kappa_n = kbar_n sign(.); epsilon > 0 uses kbar_n sat(./epsilon), which removes the
+  //! discrete-time chattering of kappa_n. |kappa_n| <= kbar_n either way, so every bound holds.
+  double boundary_layer = 0.0;
   SlidingSurface surface = SlidingSurface::global;
   CorneringTarget cornering_target = CorneringTarget::rear_axle;
   //! Largest arc-length step [m] of the RK4 integration of the chain, relative to the shortest
@@ -61,6 +66,8 @@ struct ControllerParameters {
   void validate() const;
   //! Same checks without throwing: returns an empty string when valid, else the message.
   std::string validation_error() const;
+  //! Same rules as validation_error(), for real-time use: noexcept and allocation free.
+  bool is_valid() const noexcept;
 
   //! The paper's C^1 controller (n = 2) with the fictive wheelbase of eq. (cornering_constr):
   //! lambda = sqrt(lambda_veh^2 - lambda_l^2).

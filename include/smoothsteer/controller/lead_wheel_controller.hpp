@@ -34,6 +34,14 @@ class LeadWheelController final : public SteeringController {
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "lead_wheel"; }
 
+  //! Real-time parameter change (gain scheduling, docs/tuning.md): noexcept, no allocation.
+  //! Keeps the commanded delta_veh continuous by re-mapping delta_1 to the new lambda_1
+  //! (tan(delta_veh)/lambda_veh = tan(delta_1)/lambda_1), keeps delta_2..delta_n, and clamps
+  //! every chain angle into the new invariant sets (a shrinking set can move delta_veh by at most
+  //! the amount it shrank). Returns invalid_input, leaving the controller unchanged, if the
+  //! parameters are invalid (is_valid()) or change the order n.
+  Status retune(const ControllerParameters& parameters) noexcept;
+
   //! Evaluation hook: a matched disturbance kappa_d added to the lead-wheel curvature, i.e. the
   //! extended system receives kappa_n + kappa_d (paper Sec. III item 2: d psi_l / ds_l =
   //! kappa_l + kappa_d). The law stays convergent for |kappa_d| < k_rob kbar_n.
