@@ -1,8 +1,113 @@
-// Placeholder until this subcommand group lands; replaced by its owner.
+// `smoothsteer tune`: velocity-dependent controller parameters from a vehicle's steering limits
+// (paper Sec. III; docs/tuning.md).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
 #include "commands.hpp"
+#include "smoothsteer/tuning/gain_schedule.hpp"
+#include "smoothsteer/tuning/schedule_files.hpp"
 
 namespace smoothsteer::cli {
+namespace {
 
-void add_tune_command(CLI::App& app) { (void)app; }
+struct TuneArguments {
+  std::string vehicle_file;
+  std::string speeds = "1:30:0.5";
+  std::string out;
+  int order = 2;
+  double max_steering_acceleration = std::numeric_limits<double>::quiet_NaN();
+  TuningOptions options;
+};
+
+std::vector<double> parse_speeds(const std::string& text) {
+  double first = 0, last = 0, step = 0;
+  char a = 0, b = 0;
+  std::istringstream in(text);
+  if (!(in >> first >> a >> last >> b >> step) || a != ':' || b != ':' || !in.eof()) {
+    in.clear();
+    throw std::invalid_argument("--speeds '" + text +
+                                "' must be FIRST:LAST:STEP in m/s, e.g. 1:30:0.5");
+  }
+  return speed_grid(first, last, step);
+}
+
+void print_summary(const GainSchedule& schedule, std::ostream& out) {
+  const auto& entries = schedule.entries();
+  out << "velocity regions (paper Sec. III):\n";
+  for (std::size_t begin = 0; begin < entries.size();) {
+    std::size_t end = begin;
+    while (end + 1 < entries.size() && entries[end + 1].region == entries[begin].region) ++end;
+    const ScheduleEntry& a = entries[begin];
+    const ScheduleEntry& b = entries[end];
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "  %5.2f-%5.2f m/s  region %-42s lambda_l %.3f-%.3f m  lead radius %.2f-%.2f m\n",
+                  a.speed_mps, b.speed_mps, to_string(a.region), a.lead_wheelbase_m,
+                  b.lead_wheelbase_m, 1.0 / a.lead_curvature_bound, 1.0 / b.lead_curvature_bound);
+    out << line;
+    begin = end + 1;
+  }
+}
+
+void run_tune(const TuneArguments& arguments) {
+  VehicleLimits vehicle = load_vehicle_limits(arguments.vehicle_file);
+  if (!std::isnan(arguments.max_steering_acceleration)) {
+    vehicle.max_steering_acceleration_radps2 = arguments.max_steering_acceleration;
+  }
+  TuningOptions options = arguments.options;
+  options.order = arguments.order;
+  const std::vector<double> speeds = parse_speeds(arguments.speeds);
+  StaticMapOptions map_options;
+  map_options.max_steering_angle_rad =
+      std::max(map_options.max_steering_angle_rad, std::min(1.49, vehicle.max_steering_angle_rad));
+  const StaticMap map(map_options);
+  const GainSchedule schedule = compute_gain_schedule(vehicle, options, speeds, map);
+  write_schedule_csv(schedule, arguments.out);
+  std::cout << "vehicle " << arguments.vehicle_file << ": lambda_veh " << vehicle.wheelbase_m
+            << " m, limits " << vehicle.max_steering_angle_rad << " rad, "
+            << vehicle.max_steering_rate_radps << " rad/s, "
+            << vehicle.max_steering_acceleration_radps2 << " rad/s^2; order n = " << options.order
+            << "\n";
+  print_summary(schedule, std::cout);
+  std::cout << "wrote " << schedule.entries().size() << " speeds to " << arguments.out << "\n";
+}
+
+}  // namespace
+
+void add_tune_command(CLI::App& app) {
+  auto arguments = std::make_shared<TuneArguments>();
+  CLI::App* tune = app.add_subcommand(
+      "tune",
+      "Velocity-dependent controller parameters from the vehicle's steering limits "
+      "(paper Sec. III); writes the gain schedule as CSV");
+  tune->add_option("--vehicle", arguments->vehicle_file, "vehicle YAML (vehicles/NAME.yaml)")
+      ->required();
+  tune->add_option("--speeds", arguments->speeds, "FIRST:LAST:STEP in m/s")->capture_default_str();
+  tune->add_option("--out", arguments->out, "schedule CSV to write")->required();
+  tune->add_option("--order", arguments->order, "n: 1 (C0) or 2 (C1)")->capture_default_str();
+  tune->add_option("--max-steering-acceleration", arguments->max_steering_acceleration,
+                   "steering acceleration limit [rad/s^2]; overrides the vehicle file");
+  tune->add_option("--max-longitudinal-acceleration",
+                   arguments->options.max_longitudinal_acceleration_mps2,
+                   "largest |dv/dt| to cover [m/s^2] (adds |dv/dt| delta' to d2(delta)/dt2)")
+      ->capture_default_str();
+  tune->add_option("--min-lead-curvature", arguments->options.min_lead_curvature_bound,
+                   "smallest admissible kbar_l [1/m]")
+      ->capture_default_str();
+  tune->add_option("--path-curvature", arguments->options.path_curvature_bound,
+                   "largest reference-path curvature k_rob must cover [1/m]")
+      ->capture_default_str();
+  tune->add_option("--disturbance", arguments->options.matched_disturbance_curvature,
+                   "matched disturbance kappa_d k_rob must cover [1/m]")
+      ->capture_default_str();
+  tune->callback([arguments] { run_tune(*arguments); });
+}
 
 }  // namespace smoothsteer::cli

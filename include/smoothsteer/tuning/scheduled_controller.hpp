@@ -1,0 +1,36 @@
+#pragma once
+//! \file scheduled_controller.hpp
+//! The lead-wheel controller driven by a gain schedule: every update() looks up the parameters
+//! for the measured |v| (GainSchedule::parameters_at, continuous in v) and retunes the controller
+//! before the control step. Real time: noexcept, no allocation.
+
+#include <memory>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/tuning/gain_schedule.hpp"
+
+namespace smoothsteer {
+
+class ScheduledController final : public SteeringController {
+ public:
+  //! Throws std::invalid_argument for an empty schedule or a null path.
+  ScheduledController(GainSchedule schedule, std::shared_ptr<const Path> path);
+
+  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  const char* name() const noexcept override { return "scheduled_lead_wheel"; }
+
+  const GainSchedule& schedule() const noexcept { return schedule_; }
+  const LeadWheelController& controller() const noexcept { return controller_; }
+  //! Forwarded to the inner controller (evaluation hook, see LeadWheelController).
+  void set_matched_disturbance(double kappa_d) noexcept {
+    controller_.set_matched_disturbance(kappa_d);
+  }
+
+ private:
+  GainSchedule schedule_;
+  LeadWheelController controller_;
+  double tuned_speed_ = -1.0;  //!< |v| of the last retune; equal speeds skip the retune
+};
+
+}  // namespace smoothsteer

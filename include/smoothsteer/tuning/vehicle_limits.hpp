@@ -1,0 +1,24 @@
+#pragma once
+//! \file vehicle_limits.hpp
+//! What a user knows about the vehicle: its wheelbase and the limits of the steering actuator
+//! (paper Sec. II-C constraints C1-C3, in the time domain).
+
+#include <limits>
+#include <string>
+
+namespace smoothsteer {
+
+struct VehicleLimits {
+  double wheelbase_m = 2.578;             //!< lambda_veh [m]
+  double max_steering_angle_rad = 1.066;  //!< C1: |delta_veh| <= this [rad], < pi/2
+  double max_steering_rate_radps = 0.4;   //!< C2: |d delta_veh/dt| <= this [rad/s]
+  //! C3: |d2 delta_veh/dt2| <= this [rad/s^2]; +inf = no limit (required for order n = 1).
+  double max_steering_acceleration_radps2 = std::numeric_limits<double>::infinity();
+
+  //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
+  void validate() const;
+  //! Same checks without throwing: empty when valid.
+  std::string validation_error() const;
+};
+
+}  // namespace smoothsteer

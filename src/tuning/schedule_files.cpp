@@ -1,0 +1,190 @@
+#include "smoothsteer/tuning/schedule_files.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace smoothsteer {
+namespace {
+
+constexpr std::array<const char*, 10> kColumns{"speed_mps",
+                                               "region",
+                                               "fictive_wheelbase_m",
+                                               "lead_wheelbase_m",
+                                               "lead_curvature_bound_per_m",
+                                               "lead_radius_m",
+                                               "k_rob",
+                                               "max_steering_angle_rad",
+                                               "max_steering_rate_radps",
+                                               "max_steering_acceleration_radps2"};
+
+// Keys of the simulation's vehicle schema (vehicles/*.yaml, docs/scenarios.md) that the tuner
+// does not need.
+const std::set<std::string>& ignored_keys() {
+  static const std::set<std::string> keys{"name",
+                                          "source",
+                                          "mass_kg",
+                                          "yaw_inertia_kgm2",
+                                          "cg_height_m",
+                                          "front_tire",
+                                          "rear_tire",
+                                          "kinematic_below_mps",
+                                          "kinetic_above_mps"};
+  return keys;
+}
+
+[[noreturn]] void fail(const std::string& file, const std::string& key, const std::string& why) {
+  throw std::invalid_argument(file + ": " + key + ": " + why);
+}
+
+double number(const YAML::Node& root, const std::string& file, const std::string& key) {
+  const YAML::Node node = root[key];
+  if (!node) fail(file, key, "missing (required)");
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(file, key, "must be a number");
+  }
+}
+
+}  // namespace
+
+VehicleLimits load_vehicle_limits(const std::string& yaml_path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(yaml_path);
+  } catch (const YAML::Exception& error) {
+    throw std::invalid_argument(yaml_path + ": cannot read vehicle file: " + error.what());
+  }
+  if (!root.IsMap()) throw std::invalid_argument(yaml_path + ": a vehicle file must be a map");
+  static const std::set<std::string> used{"wheelbase_m",
+                                          "cg_to_front_axle_m",
+                                          "cg_to_rear_axle_m",
+                                          "max_steering_angle_rad",
+                                          "max_steering_rate_radps",
+                                          "max_steering_acceleration_radps2"};
+  for (const auto& item : root) {
+    const std::string key = item.first.as<std::string>();
+    if (!used.count(key) && !ignored_keys().count(key)) {
+      fail(yaml_path, key, "unknown key (docs/tuning.md lists the vehicle schema)");
+    }
+  }
+  VehicleLimits limits;
+  if (root["wheelbase_m"]) {
+    limits.wheelbase_m = number(root, yaml_path, "wheelbase_m");
+  } else if (root["cg_to_front_axle_m"] || root["cg_to_rear_axle_m"]) {
+    limits.wheelbase_m = number(root, yaml_path, "cg_to_front_axle_m") +
+                         number(root, yaml_path, "cg_to_rear_axle_m");
+  } else {
+    fail(yaml_path, "wheelbase_m", "missing (or give cg_to_front_axle_m and cg_to_rear_axle_m)");
+  }
+  limits.max_steering_angle_rad = number(root, yaml_path, "max_steering_angle_rad");
+  limits.max_steering_rate_radps = number(root, yaml_path, "max_steering_rate_radps");
+  if (root["max_steering_acceleration_radps2"]) {
+    limits.max_steering_acceleration_radps2 =
+        number(root, yaml_path, "max_steering_acceleration_radps2");
+  }
+  const std::string error = limits.validation_error();
+  if (!error.empty()) throw std::invalid_argument(yaml_path + ": " + error);
+  return limits;
+}
+
+void write_schedule_csv(const GainSchedule& schedule, const std::string& csv_path) {
+  const std::string temporary = csv_path + ".tmp";
+  {
+    std::ofstream out(temporary);
+    if (!out) throw std::runtime_error("cannot write " + temporary);
+    out.precision(12);
+    for (std::size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];
+    out << '\n';
+    for (const ScheduleEntry& e : schedule.entries()) {
+      out << e.speed_mps << ',' << static_cast<int>(e.region) << ',' << e.fictive_wheelbase_m << ','
+          << e.lead_wheelbase_m << ',' << e.lead_curvature_bound << ','
+          << 1.0 / e.lead_curvature_bound << ',' << e.k_rob << ',' << e.max_steering_angle_rad
+          << ',' << e.max_steering_rate_radps << ',' << e.max_steering_acceleration_radps2 << '\n';
+    }
+    if (!out.flush()) throw std::runtime_error("cannot write " + temporary);
+  }
+  if (std::rename(temporary.c_str(), csv_path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot rename " + temporary + " to " + csv_path);
+  }
+}
+
+GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerParameters& base) {
+  std::ifstream in(csv_path);
+  if (!in) throw std::invalid_argument(csv_path + ": cannot open schedule file");
+  std::string line;
+  std::getline(in, line);
+  std::string expected;
+  for (std::size_t c = 0; c < kColumns.size(); ++c) {
+    if (c > 0) expected.push_back(',');
+    expected.append(kColumns[c]);
+  }
+  if (line != expected)
+    throw std::invalid_argument(csv_path + ": line 1: header must be " + expected);
+  std::vector<ScheduleEntry> entries;
+  VehicleLimits vehicle;
+  vehicle.max_steering_angle_rad = vehicle.max_steering_rate_radps = 0.0;
+  vehicle.max_steering_acceleration_radps2 = 0.0;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    std::array<double, kColumns.size()> v{};
+    std::istringstream row(line);
+    std::string cell;
+    for (std::size_t c = 0; c < kColumns.size(); ++c) {
+      if (!std::getline(row, cell, ',')) {
+        throw std::invalid_argument(csv_path + ": line " + std::to_string(number) + ": column " +
+                                    kColumns[c] + " missing");
+      }
+      char* end = nullptr;
+      v[c] = std::strtod(cell.c_str(), &end);
+      if (end == cell.c_str() || (std::isnan(v[c]))) {
+        throw std::invalid_argument(csv_path + ": line " + std::to_string(number) + ": column " +
+                                    kColumns[c] + " = '" + cell + "' is not a number");
+      }
+    }
+    ScheduleEntry e;
+    e.speed_mps = v[0];
+    e.region = static_cast<VelocityRegion>(static_cast<int>(v[1]));
+    e.fictive_wheelbase_m = v[2];
+    e.lead_wheelbase_m = v[3];
+    e.lead_curvature_bound = v[4];
+    e.k_rob = v[6];
+    e.max_steering_angle_rad = v[7];
+    e.max_steering_rate_radps = v[8];
+    e.max_steering_acceleration_radps2 = v[9];
+    if (!entries.empty() && !(e.speed_mps > entries.back().speed_mps)) {
+      throw std::invalid_argument(csv_path + ": line " + std::to_string(number) +
+                                  ": speed_mps must increase");
+    }
+    vehicle.wheelbase_m = std::hypot(e.fictive_wheelbase_m, e.lead_wheelbase_m);
+    vehicle.max_steering_angle_rad =
+        std::max(vehicle.max_steering_angle_rad, e.max_steering_angle_rad);
+    vehicle.max_steering_rate_radps =
+        std::max(vehicle.max_steering_rate_radps, e.max_steering_rate_radps);
+    vehicle.max_steering_acceleration_radps2 =
+        std::max(vehicle.max_steering_acceleration_radps2, e.max_steering_acceleration_radps2);
+    entries.push_back(e);
+  }
+  if (entries.empty()) throw std::invalid_argument(csv_path + ": no schedule rows");
+  TuningOptions options;
+  options.base = base;
+  options.order = entries.front().lead_wheelbase_m > 0.0 ? 2 : 1;
+  GainSchedule schedule(vehicle, options, std::move(entries));
+  for (const double v : {0.0, schedule.max_speed_mps()}) {
+    const ControllerParameters p = schedule.parameters_at(v);
+    if (!p.is_valid()) throw std::invalid_argument(csv_path + ": " + p.validation_error());
+  }
+  return schedule;
+}
+
+}  // namespace smoothsteer

@@ -1,0 +1,156 @@
+// Closed loops on the kinematic model with the gain schedule (paper Sec. III): from far away with
+// any heading, at constant speeds in [1, 30] m/s and while accelerating/braking between them, the
+// commanded steering angle, rate and acceleration (time domain, d2/dt2 with its dv/dt term) stay
+// within the vehicle's limits. Also: retune() keeps delta_veh continuous.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/sim/kinematic_closed_loop.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
+#include "support/property.hpp"
+
+namespace smoothsteer {
+namespace {
+
+using namespace smoothsteer::testing;
+
+const StaticMap& shared_map() {
+  static const StaticMap map{};
+  return map;
+}
+
+VehicleLimits example_vehicle() {
+  VehicleLimits v;  // CommonRoad vehicle 2 + a steering-acceleration limit
+  v.max_steering_acceleration_radps2 = 5.0;
+  return v;
+}
+
+TEST(ScheduledLoop, LimitsHoldAtConstantSpeedsFromAnyStart) {
+  const VehicleLimits vehicle = example_vehicle();
+  const GainSchedule schedule =
+      compute_gain_schedule(vehicle, {}, speed_grid(1.0, 30.0, 0.5), shared_map());
+  auto path = std::make_shared<const Path>(Path::straight_line({-500.0, 0.0}, 0.0, 20000.0));
+  const int cases = property_cases(8);
+  for (int k = 0; k < cases; ++k) {
+    Random random(case_seed(k) + 31);
+    const double speed = k == 0 ? 1.0 : k == 1 ? 30.0 : random.uniform(1.0, 30.0);
+    const Pose2 start{{random.uniform(-50.0, 50.0), random.uniform(-80.0, 80.0)},
+                      random.uniform(-pi, pi)};
+    std::ostringstream text;
+    text << seed_message(case_seed(k) + 31) << " v=" << speed << " start=(" << start.position.x
+         << "," << start.position.y << "," << start.heading_rad << ")";
+    SCOPED_TRACE(text.str());
+    ScheduledController controller(schedule, path);
+    KinematicLoopOptions options;
+    options.wheelbase_m = vehicle.wheelbase_m;
+    options.speed_mps = speed;
+    options.duration_s = std::min(200.0, 1500.0 / speed);
+    options.record_trace = false;
+    const KinematicLoopResult r = run_kinematic_closed_loop(controller, start, options);
+    ASSERT_EQ(r.status, Status::ok);
+    EXPECT_FALSE(r.any_non_finite);
+    EXPECT_LE(r.max_abs_steering_rad, vehicle.max_steering_angle_rad * (1 + 1e-9));
+    EXPECT_LE(r.max_abs_steering_rate_radps, vehicle.max_steering_rate_radps * (1 + 1e-9));
+    EXPECT_LE(r.max_abs_steering_difference_rate_radps,
+              vehicle.max_steering_rate_radps * (1 + 1e-6));
+    EXPECT_LE(r.max_abs_steering_acceleration_radps2,
+              vehicle.max_steering_acceleration_radps2 * (1 + 1e-9));
+  }
+}
+
+TEST(ScheduledLoop, LimitsHoldWhileTheSpeedChanges) {
+  const VehicleLimits vehicle = example_vehicle();
+  TuningOptions options;
+  options.max_longitudinal_acceleration_mps2 = 2.0;
+  const GainSchedule schedule =
+      compute_gain_schedule(vehicle, options, speed_grid(1.0, 30.0, 0.5), shared_map());
+  auto path = std::make_shared<const Path>(Path::straight_line({-500.0, 0.0}, 0.0, 50000.0));
+  for (int k = 0; k < property_cases(3); ++k) {
+    Random random(case_seed(k) + 32);
+    const double acceleration = random.uniform(0.5, 2.0);
+    Pose2 pose{{0.0, random.uniform(-60.0, 60.0)}, random.uniform(-pi, pi)};
+    std::ostringstream text;
+    text << seed_message(case_seed(k) + 32) << " dv/dt=+-" << acceleration << " start=("
+         << pose.position.y << "," << pose.heading_rad << ")";
+    SCOPED_TRACE(text.str());
+    ScheduledController controller(schedule, path);
+    const KinematicSingleTrack model{vehicle.wheelbase_m};
+    const double dt = 0.02;
+    double speed = 1.0, direction = 1.0, previous_angle = 0.0, previous_rate = 0.0;
+    double max_angle = 0, max_rate = 0, max_accel = 0, max_difference_rate = 0,
+           max_difference_accel = 0;
+    // 1 -> 30 -> 1 m/s, twice.
+    for (int step = 0, turns = 0; turns < 4; ++step) {
+      const double a = direction * acceleration;
+      ControllerOutput out;
+      ASSERT_EQ(controller.update({pose.position, pose.heading_rad, speed, a, dt}, out),
+                Status::ok);
+      max_angle = std::max(max_angle, std::abs(out.steering_angle_rad));
+      max_rate = std::max(max_rate, std::abs(out.steering_rate_radps));
+      max_accel = std::max(max_accel, std::abs(out.steering_acceleration_radps2));
+      if (step > 0) {
+        const double rate = (out.steering_angle_rad - previous_angle) / dt;
+        max_difference_rate = std::max(max_difference_rate, std::abs(rate));
+        if (step > 1)
+          max_difference_accel =
+              std::max(max_difference_accel, std::abs(rate - previous_rate) / dt);
+        previous_rate = rate;
+      }
+      previous_angle = out.steering_angle_rad;
+      pose = model.step(pose, out.steering_angle_rad, speed, dt);
+      speed += a * dt;
+      if (speed >= 30.0 || speed <= 1.0) {
+        speed = std::clamp(speed, 1.0, 30.0);
+        direction = -direction;
+        ++turns;
+      }
+    }
+    EXPECT_LE(max_angle, vehicle.max_steering_angle_rad * (1 + 1e-9));
+    EXPECT_LE(max_rate, vehicle.max_steering_rate_radps * (1 + 1e-9));
+    EXPECT_LE(max_accel, vehicle.max_steering_acceleration_radps2 * (1 + 1e-9));
+    // Sampled differences also see the parameter drift of the schedule: a small margin.
+    EXPECT_LE(max_difference_rate, vehicle.max_steering_rate_radps * 1.01);
+    EXPECT_LE(max_difference_accel, vehicle.max_steering_acceleration_radps2 * 1.05);
+  }
+}
+
+TEST(Retune, KeepsSteeringContinuousAndRejectsBadParameters) {
+  auto path = std::make_shared<const Path>(Path::circle({0.0, 0.0}, 40.0));
+  for (int k = 0; k < property_cases(40); ++k) {
+    Random random(case_seed(k) + 33);
+    const double vehicle = random.uniform(2.0, 3.5);
+    // kbar_l = sin(theta) / lambda_veh gives the real angle bound theta for any lambda_l.
+    const double theta = random.uniform(0.1, 0.8);
+    const ControllerParameters a = ControllerParameters::paper_c1(
+        vehicle, random.uniform(0.1, 0.9) * vehicle, std::sin(theta) / vehicle, 0.3);
+    const ControllerParameters b =
+        ControllerParameters::paper_c1(vehicle, random.uniform(0.1, 0.9) * vehicle,
+                                       std::sin(theta * random.uniform(1.0, 1.5)) / vehicle, 0.3);
+    SCOPED_TRACE(seed_message(case_seed(k) + 33));
+    LeadWheelController controller(a, path);
+    const double measured = random.uniform(-1.0, 1.0) * controller.bounds().steering_angle_rad;
+    controller.reset(measured);
+    const double before = controller.vehicle_steering_angle(controller.chain_angles()[0]);
+    ASSERT_EQ(controller.retune(b), Status::ok);
+    // b's set is at least as large (kbar grows, eq. kappalmax is independent of lambda_l).
+    EXPECT_NEAR(controller.vehicle_steering_angle(controller.chain_angles()[0]), before, 1e-12);
+    EXPECT_EQ(controller.parameters().wheelbases_m[1], b.wheelbases_m[1]);
+    for (int i = 0; i < 2; ++i) {
+      EXPECT_LE(std::abs(controller.chain_angles()[i]), controller.bounds().angle[i] * (1 + 1e-15));
+    }
+    ControllerParameters bad = b;
+    bad.lead_curvature_bound = std::nan("");
+    EXPECT_EQ(controller.retune(bad), Status::invalid_input);
+    bad = b;
+    bad.order = 3;
+    EXPECT_EQ(controller.retune(bad), Status::invalid_input);
+    EXPECT_EQ(controller.parameters().lead_curvature_bound, b.lead_curvature_bound);
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer
