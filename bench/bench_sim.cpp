@@ -1,0 +1,50 @@
+// Closed-loop simulation throughput: the kinetic single-track model with Pacejka tires, the
+// third-order actuator and the n = 2 lead-wheel controller in the loop (circle_sections-like run).
+// Reports control steps/s and plant RK4 sub-steps/s. Figures: docs/results.md.
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <numbers>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/sim/simulation.hpp"
+
+namespace {
+
+using namespace smoothsteer;
+
+void BM_DynamicClosedLoop(benchmark::State& state) {
+  constexpr double pi = std::numbers::pi;
+  const VehicleParameters car;
+  auto path = std::make_shared<const Path>(
+      PathBuilder({0, 0}, 0.0).line(15).arc(30, pi / 2).arc(40, -pi).arc(50, pi / 2).build());
+  LeadWheelController controller(ControllerParameters::paper_c1(car.wheelbase_m(), 0.5, 0.2, 0.3),
+                                 path);
+  DynamicSingleTrack model(car);
+  ActuatorParameters actuator;
+  actuator.dead_time_s = 0.0;
+  actuator.max_rate_radps = 3.0;
+  SimulationParameters sim;
+  sim.control_period_s = 0.001 * static_cast<double>(state.range(0));
+  sim.duration_s = 20.0;
+  sim.stop_at_path_end = false;
+  const SpeedProfile speed{2.8, 12.5, 0.5, 2.0};
+  std::int64_t control_steps = 0;
+  for (auto _ : state) {
+    const SimulationResult result =
+        simulate(*path, model, actuator, speed, sim, {{0, -1}, 0}, controller);
+    control_steps += static_cast<std::int64_t>(result.trace.size());
+    benchmark::DoNotOptimize(result.final_state.x_m);
+  }
+  const double substeps_per_step = sim.control_period_s / sim.substep_s;
+  state.counters["control_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(control_steps), benchmark::Counter::kIsRate);
+  state.counters["plant_substeps_per_s"] = benchmark::Counter(
+      static_cast<double>(control_steps) * substeps_per_step, benchmark::Counter::kIsRate);
+}
+// Argument: control period in ms (50 Hz and 20 Hz).
+BENCHMARK(BM_DynamicClosedLoop)->Arg(20)->Arg(50)->Unit(benchmark::kMillisecond);
+
+}  // namespace

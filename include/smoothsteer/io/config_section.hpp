@@ -1,0 +1,86 @@
+#pragma once
+//! \file config_section.hpp
+//! Strict reading of one YAML mapping: every read names its key, checks type and range, and is
+//! remembered, so that finish() can reject keys nobody read. Errors are ConfigError with the
+//! message "<file>: key '<path.to.key>' (line L): <reason>". Each read value (or default) is
+//! recorded in resolved(), which becomes the "parameters" of summary.json.
+
+#include <yaml-cpp/yaml.h>
+
+#include <limits>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace smoothsteer::io {
+
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+//! Allowed interval of a number; bounds are inclusive unless marked open.
+struct Range {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_open = false;
+  bool max_open = false;
+  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  static Range non_negative() {
+    return {0.0, std::numeric_limits<double>::infinity(), false, false};
+  }
+  bool contains(double x) const;
+  std::string describe() const;
+};
+
+class ConfigSection {
+ public:
+  //! `node` must be a mapping or null (= empty); `key_path` is "" for the root.
+  ConfigSection(YAML::Node node, std::string key_path, std::string file);
+
+  bool has(const std::string& key) const;
+  double number(const std::string& key, double default_value, Range range = {});
+  double required_number(const std::string& key, Range range = {});
+  int integer(const std::string& key, int default_value, int min, int max);
+  bool boolean(const std::string& key, bool default_value);
+  std::string text(const std::string& key, const std::string& default_value,
+                   const std::vector<std::string>& allowed = {});
+  std::string required_text(const std::string& key);
+  std::vector<double> numbers(const std::string& key, const std::vector<double>& default_value,
+                              std::size_t min_count, std::size_t max_count, Range range = {});
+  //! A nested mapping (empty if absent). Call finish() on it too; store() its resolved().
+  ConfigSection section(const std::string& key);
+  //! The raw node (marked as read); for lists of mappings.
+  YAML::Node raw(const std::string& key);
+  //! Records a resolved value that was read by other means.
+  void store(const std::string& key, const YAML::Node& value);
+
+  //! Throws ConfigError naming every key that was never read.
+  void finish() const;
+  [[noreturn]] void fail(const std::string& key, const std::string& reason) const;
+
+  //! Key paths set by --set overrides: their errors say "(from --set)" instead of a line.
+  void set_overridden_keys(std::shared_ptr<const std::set<std::string>> keys) {
+    overridden_ = std::move(keys);
+  }
+
+  const YAML::Node& resolved() const { return resolved_; }
+  const std::string& file() const { return file_; }
+  std::string full_key(const std::string& key) const;
+
+ private:
+  YAML::Node node_;
+  std::string key_path_;
+  std::string file_;
+  std::set<std::string> read_;
+  YAML::Node resolved_;
+  std::shared_ptr<const std::set<std::string>> overridden_;
+};
+
+//! Loads a YAML file; ConfigError "<file>: cannot open" / "<file>: malformed YAML at line L,
+//! column C: <reason>".
+YAML::Node load_yaml_file(const std::string& file);
+
+}  // namespace smoothsteer::io

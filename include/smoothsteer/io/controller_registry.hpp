@@ -1,0 +1,39 @@
+#pragma once
+//! \file controller_registry.hpp
+//! Controllers by name, for scenario files (`controller: {type: lead_wheel, ...}`). Other
+//! libraries (baselines) add their types with register_controller_type(). A factory reads its
+//! keys through the ConfigSection (type, range and unknown-key checks come for free: the
+//! registry calls finish() after the factory, so every key the factory did not read is
+//! rejected). Thread-safe.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/io/config_section.hpp"
+#include "smoothsteer/path/path.hpp"
+#include "smoothsteer/vehicle/vehicle_parameters.hpp"
+
+namespace smoothsteer::io {
+
+using ControllerFactory = std::function<std::unique_ptr<SteeringController>(
+    ConfigSection& controller_section, std::shared_ptr<const Path> path,
+    const VehicleParameters& vehicle)>;
+
+//! Adds or replaces a controller type. "lead_wheel" is built in.
+void register_controller_type(const std::string& name, ControllerFactory factory);
+//! Registered names, sorted.
+std::vector<std::string> controller_types();
+
+//! Builds the controller described by `section` (a mapping with `type`). `key_path` and `file`
+//! name the section in error messages. If `resolved` is given, it receives the section with
+//! every default filled in.
+std::unique_ptr<SteeringController> make_controller(
+    const YAML::Node& section, const std::string& key_path, const std::string& file,
+    std::shared_ptr<const Path> path, const VehicleParameters& vehicle,
+    YAML::Node* resolved = nullptr,
+    std::shared_ptr<const std::set<std::string>> overridden_keys = nullptr);
+
+}  // namespace smoothsteer::io

@@ -1,0 +1,66 @@
+#pragma once
+//! \file metrics.hpp
+//! Performance indicators of a closed-loop run (paper Sec. IV-A). Every definition is written
+//! down in docs/metrics.md; metric_values() lists them under their documented names.
+
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "smoothsteer/sim/simulation.hpp"
+
+namespace smoothsteer {
+
+struct MetricsParameters {
+  //! The path counts as reached at the first control step after which |e_lead| stays below
+  //! this threshold until the end of the run [m].
+  double reaching_threshold_m = 0.1;
+  double steering_angle_limit_rad = 1.066;  //!< bound counted by angle_violations [rad]
+  double steering_rate_limit_radps = 0.4;   //!< bound counted by rate_violations [rad/s]
+  //! Bound counted by acceleration_violations [rad/s^2]; infinity = not counted.
+  double steering_acceleration_limit_radps2 = std::numeric_limits<double>::infinity();
+  //! Relative tolerance of the bound checks (a command exactly at the bound is no violation).
+  double violation_tolerance = 1e-6;
+
+  std::string validation_error() const;
+};
+
+struct Metrics {
+  int steps = 0;            //!< control steps in the trace
+  double duration_s = 0.0;  //!< time of the last sample
+  double distance_m = 0.0;  //!< rear-axle distance of the last sample
+  bool reached = false;
+  double reaching_time_s = -1.0;                       //!< -1 when not reached
+  double reaching_distance_m = -1.0;                   //!< -1 when not reached
+  double max_abs_lead_error_after_reaching_m = -1.0;   //!< -1 when not reached
+  double max_abs_front_error_after_reaching_m = -1.0;  //!< -1 when not reached
+  double max_abs_rear_error_after_reaching_m = -1.0;   //!< -1 when not reached
+  double max_abs_rear_error_m = 0.0;                   //!< whole run
+  double max_abs_front_error_m = 0.0;                  //!< whole run
+  double max_abs_lead_error_m = 0.0;                   //!< whole run
+  double final_abs_rear_error_m = 0.0;
+  double command_rate_std_radps = 0.0;
+  double command_rate_max_radps = 0.0;
+  double command_acceleration_std_radps2 = 0.0;
+  double command_acceleration_max_radps2 = 0.0;
+  double actual_rate_std_radps = 0.0;
+  double actual_rate_max_radps = 0.0;
+  double actual_acceleration_std_radps2 = 0.0;
+  double actual_acceleration_max_radps2 = 0.0;
+  double max_abs_command_rad = 0.0;
+  double max_abs_actual_rad = 0.0;
+  double max_abs_side_slip_rad = 0.0;
+  int angle_violations = 0;         //!< steps with |delta_cmd| above the angle limit
+  int rate_violations = 0;          //!< steps with |d delta_cmd/dt| above the rate limit
+  int acceleration_violations = 0;  //!< steps with |d2 delta_cmd/dt2| above its limit
+  int bound_violations = 0;         //!< steps with at least one of the three
+  int non_finite_values = 0;        //!< non-finite numbers in the trace (must be 0)
+};
+
+Metrics compute_metrics(const std::vector<TraceSample>& trace, const MetricsParameters& parameters);
+
+//! (name, value) of every metric, in a fixed documented order (booleans and counts as doubles).
+std::vector<std::pair<std::string, double>> metric_values(const Metrics& metrics);
+
+}  // namespace smoothsteer

@@ -1,0 +1,84 @@
+#pragma once
+//! \file simulation.hpp
+//! Closed-loop simulation: a steering controller sampled at its own period with a zero-order
+//! hold, the steering actuator (dead time, third-order low-pass, saturation) and a vehicle model
+//! integrated with RK4 at a fixed sub-step. Optional seeded Gaussian pose noise on the
+//! measurement and a matched curvature disturbance. Definitions: docs/simulation.md.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/path/path.hpp"
+#include "smoothsteer/sim/speed_profile.hpp"
+#include "smoothsteer/vehicle/steering_actuator.hpp"
+#include "smoothsteer/vehicle/vehicle_model.hpp"
+
+namespace smoothsteer {
+
+struct SimulationParameters {
+  double control_period_s = 0.02;  //!< controller period (50 Hz) [s]; a multiple of substep_s
+  double substep_s = 0.001;        //!< RK4 step of the plant [s]
+  double duration_s = 60.0;        //!< longest simulated time [s]
+  //! Stop once the rear axle's closest point is this far beyond the end of an open path [m]
+  //! (negative: before the end). Ignored for closed paths.
+  double stop_beyond_path_end_m = 0.0;
+  bool stop_at_path_end = true;
+  //! Matched curvature disturbance kappa_d [1/m]. For a LeadWheelController it is injected with
+  //! set_matched_disturbance (paper Sec. III item 2); for any other controller it bends the
+  //! rear-axle path: tan(delta_eff) = tan(delta) + L kappa_d.
+  double matched_disturbance = 0.0;
+  double position_noise_std_m = 0.0;   //!< std of Gaussian noise on x and y of the rear axle [m]
+  double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
+  std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
+
+  //! Empty when valid, else a message naming the field, value and rule.
+  std::string validation_error() const;
+  void validate() const;  //!< throws std::invalid_argument
+};
+
+//! One row per control step (docs/cli.md lists the CSV columns).
+struct TraceSample {
+  double time_s = 0.0;
+  double distance_m = 0.0;                //!< travelled distance of the rear axle
+  Pose2 rear_axle;                        //!< true rear-axle pose
+  double speed_mps = 0.0;                 //!< vx
+  double acceleration_mps2 = 0.0;         //!< speed-profile dv/dt
+  double path_arc_length_m = 0.0;         //!< s of the rear axle's closest point (true pose)
+  double path_curvature = 0.0;            //!< at the rear axle's closest point
+  double lateral_error_m = 0.0;           //!< true e of the rear axle
+  double heading_error_rad = 0.0;         //!< true psi - path heading at the rear axle
+  double front_lateral_error_m = 0.0;     //!< true e of the real front axle
+  double lead_lateral_error_m = 0.0;      //!< e_lead reported by the controller (measured pose)
+  double measured_lateral_error_m = 0.0;  //!< e reported by the controller
+  double sliding_variable = 0.0;
+  double lead_curvature = 0.0;
+  double steering_command_rad = 0.0;         //!< delta_cmd
+  double steering_command_rate_radps = 0.0;  //!< controller's derivative, else finite difference
+  double steering_command_acceleration_radps2 = 0.0;
+  double steering_actual_rad = 0.0;  //!< actuator output delta_actual
+  double steering_actual_rate_radps = 0.0;
+  double steering_actual_acceleration_radps2 = 0.0;
+  double side_slip_rad = 0.0;  //!< atan(vy / vx) at the CG
+  double lateral_velocity_mps = 0.0;
+  double yaw_rate_radps = 0.0;
+};
+
+struct SimulationResult {
+  Status status = Status::ok;  //!< first non-ok controller status (the run stops there)
+  std::vector<TraceSample> trace;
+  VehicleState final_state;
+  bool non_finite = false;  //!< a NaN/inf appeared in the plant state (the run stops there)
+  std::string stop_reason;  //!< "duration", "path_end", "controller_error" or "non_finite"
+};
+
+//! Runs the closed loop from the rear-axle pose `start` (vehicle driving straight at the
+//! profile's initial speed, actuator settled at 0). The controller is reset first.
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller);
+
+}  // namespace smoothsteer

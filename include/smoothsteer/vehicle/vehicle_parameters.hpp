@@ -1,0 +1,61 @@
+#pragma once
+//! \file vehicle_parameters.hpp
+//! Parameters of the single-track vehicle models (kinematic and kinetic) and of the Pacejka
+//! Magic Formula lateral tire (paper-notes §9; Rajamani, Vehicle Dynamics and Control, ch. 2, 13).
+//! Defaults: CommonRoad vehicle models, "vehicle 2" (BMW 320i), see vehicles/passenger_car.yaml.
+
+#include <limits>
+#include <string>
+
+namespace smoothsteer {
+
+//! Lateral Magic Formula of one axle: Fy = D sin(C atan(B a - E (B a - atan(B a)))), D = mu Fz.
+struct TireParameters {
+  double stiffness_factor_b = 15.47;       //!< B [1/rad]
+  double shape_factor_c = 1.3507;          //!< C [-]
+  double friction_mu = 1.0489;             //!< D / Fz [-]
+  double curvature_factor_e = -0.0074722;  //!< E [-]
+
+  //! Cornering stiffness per unit load, dFy/dalpha / Fz at alpha = 0: B C mu [1/rad].
+  double normalized_cornering_stiffness() const noexcept {
+    return stiffness_factor_b * shape_factor_c * friction_mu;
+  }
+};
+
+struct VehicleParameters {
+  double mass_kg = 1093.3;                //!< m [kg]
+  double yaw_inertia_kgm2 = 1791.6;       //!< Iz [kg m^2]
+  double cg_to_front_axle_m = 1.156;      //!< lf [m]
+  double cg_to_rear_axle_m = 1.422;       //!< lr [m]
+  double cg_height_m = 0.614;             //!< h [m]; documented, unused by the planar model
+  double gravity_mps2 = 9.81;             //!< g [m/s^2]
+  TireParameters front_tire;              //!< lumped front axle
+  TireParameters rear_tire;               //!< lumped rear axle
+  double max_steering_angle_rad = 1.066;  //!< |delta| limit of the steering system [rad]
+  double max_steering_rate_radps = 0.4;   //!< |d delta/dt| limit of the steering system [rad/s]
+  //! Below this speed the kinetic model is purely kinematic [m/s] (no slip angles at v -> 0).
+  double kinematic_below_mps = 1.0;
+  //! Above this speed the kinetic model is purely kinetic [m/s]; linear blend in between.
+  double kinetic_above_mps = 2.0;
+  //! Time constant [s] with which vy and r relax to their kinematic values in the blend region.
+  double kinematic_relaxation_s = 0.02;
+
+  double wheelbase_m() const noexcept { return cg_to_front_axle_m + cg_to_rear_axle_m; }
+  //! Static axle loads Fz_f = m g lr / L and Fz_r = m g lf / L [N].
+  double front_axle_load_n() const noexcept {
+    return mass_kg * gravity_mps2 * cg_to_rear_axle_m / wheelbase_m();
+  }
+  double rear_axle_load_n() const noexcept {
+    return mass_kg * gravity_mps2 * cg_to_front_axle_m / wheelbase_m();
+  }
+  //! Understeer gradient of the linearized model, K = m/L (lr/Cf - lf/Cr) [rad s^2/m], with the
+  //! axle cornering stiffnesses Cf, Cr = B C D (Rajamani eq. 3.23 written per axle).
+  double understeer_gradient() const noexcept;
+
+  //! Throws std::invalid_argument naming the field, its value and the rule.
+  void validate() const;
+  //! Empty when valid, else the message.
+  std::string validation_error() const;
+};
+
+}  // namespace smoothsteer

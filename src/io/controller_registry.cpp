@@ -1,0 +1,107 @@
+#include "smoothsteer/io/controller_registry.hpp"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <numbers>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+
+namespace smoothsteer::io {
+namespace {
+
+//! The paper's controller (Sec. II-III). Defaults follow Sec. IV-A: n = 2 with the fictive
+//! wheelbase of eq. (cornering_constr), the lead wheel on the path, k_rob = 0.3 (notes §5).
+std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
+                                                    std::shared_ptr<const Path> path,
+                                                    const VehicleParameters& vehicle) {
+  ControllerParameters p;
+  const double wheelbase = vehicle.wheelbase_m();
+  p.vehicle_wheelbase_m = wheelbase;
+  p.order = c.integer("order", 2, 0, ControllerParameters::max_order);
+  p.lead_curvature_bound = c.number("lead_curvature_bound", 0.2, Range::positive());
+  p.k_rob = c.number("k_rob", 0.3, {0.0, 1.0, false, true});
+  p.approach_angle_rad = c.number("approach_angle_rad", std::numbers::pi / 2.0,
+                                  {0.0, std::numbers::pi / 2.0, true, false});
+  const std::string surface = c.text("surface", "global", {"global", "paper"});
+  p.surface = surface == "paper" ? SlidingSurface::paper : SlidingSurface::global;
+  const std::string target = c.text("cornering_target", "lead_wheel", {"lead_wheel", "rear_axle"});
+  p.cornering_target =
+      target == "rear_axle" ? CorneringTarget::rear_axle : CorneringTarget::lead_wheel;
+  p.max_substep_fraction = c.number("max_substep_fraction", 0.1, {0.0, 1.0, true, false});
+  p.max_substeps = c.integer("max_substeps", 64, 1, 10000);
+  // Wheelbases: explicit list, or the paper's choice: n = 1 -> lambda = lambda_veh (eq. ext1);
+  // n = 2 -> lambda = sqrt(lambda_veh^2 - lambda_l^2) (eq. cornering_constr).
+  if (c.has("wheelbases_m")) {
+    const auto list = c.numbers("wheelbases_m", {}, static_cast<std::size_t>(std::max(p.order, 1)),
+                                static_cast<std::size_t>(std::max(p.order, 1)), Range::positive());
+    for (std::size_t i = 0; i < list.size(); ++i) p.wheelbases_m[i] = list[i];
+    if (c.has("lead_wheelbase_m"))
+      c.fail("lead_wheelbase_m", "give either wheelbases_m or lead_wheelbase_m");
+  } else {
+    const double lead = c.number("lead_wheelbase_m", 1.0, {0.0, wheelbase, true, true});
+    if (p.order == 2) {
+      p.wheelbases_m[0] = std::sqrt(wheelbase * wheelbase - lead * lead);
+      p.wheelbases_m[1] = lead;
+    } else if (p.order == 1) {
+      p.wheelbases_m[0] = wheelbase;
+    } else if (p.order > 2) {
+      c.fail("wheelbases_m", "is required for order " + std::to_string(p.order));
+    }
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (int i = 0; i < p.order; ++i) list.push_back(p.wheelbases_m[static_cast<std::size_t>(i)]);
+    c.store("wheelbases_m", list);
+  }
+  if (const std::string error = p.validation_error(); !error.empty()) {
+    throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error);
+  }
+  return std::make_unique<LeadWheelController>(p, std::move(path));
+}
+
+struct Registry {
+  std::mutex mutex;
+  std::map<std::string, ControllerFactory> factories{{"lead_wheel", make_lead_wheel}};
+};
+
+Registry& registry() {
+  static Registry instance;
+  return instance;
+}
+
+}  // namespace
+
+void register_controller_type(const std::string& name, ControllerFactory factory) {
+  Registry& r = registry();
+  std::lock_guard lock(r.mutex);
+  r.factories[name] = std::move(factory);
+}
+
+std::vector<std::string> controller_types() {
+  Registry& r = registry();
+  std::lock_guard lock(r.mutex);
+  std::vector<std::string> names;
+  for (const auto& entry : r.factories) names.push_back(entry.first);
+  return names;
+}
+
+std::unique_ptr<SteeringController> make_controller(
+    const YAML::Node& section, const std::string& key_path, const std::string& file,
+    std::shared_ptr<const Path> path, const VehicleParameters& vehicle, YAML::Node* resolved,
+    std::shared_ptr<const std::set<std::string>> overridden_keys) {
+  ConfigSection c(section, key_path, file);
+  c.set_overridden_keys(std::move(overridden_keys));
+  const std::vector<std::string> types = controller_types();
+  const std::string type = c.text("type", "lead_wheel", types);
+  ControllerFactory factory;
+  {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    factory = r.factories.at(type);
+  }
+  std::unique_ptr<SteeringController> controller = factory(c, std::move(path), vehicle);
+  c.finish();
+  if (resolved) *resolved = c.resolved();
+  return controller;
+}
+
+}  // namespace smoothsteer::io

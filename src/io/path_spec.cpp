@@ -1,0 +1,145 @@
+// Path sections of scenario files: straight, circle, segments, lane_change, waypoints and
+// waypoints_csv (docs/scenarios.md).
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/path/path_builder.hpp"
+
+namespace smoothsteer::io {
+namespace {
+
+Vec2 point(ConfigSection& c, const std::string& key, Vec2 fallback) {
+  const auto xy = c.numbers(key, {fallback.x, fallback.y}, 2, 2);
+  return {xy[0], xy[1]};
+}
+
+//! Falcone et al. 2007 double lane change (paper-notes §8): Y(X) with the published constants.
+double lane_change_y(double x) {
+  const double shape = 2.4, dx1 = 25.0, dx2 = 21.95, dy1 = 4.05, dy2 = 5.7;
+  const double xs1 = 27.19, xs2 = 56.46;
+  const double z1 = shape / dx1 * (x - xs1) - shape / 2.0;
+  const double z2 = shape / dx2 * (x - xs2) - shape / 2.0;
+  return dy1 / 2.0 * (1.0 + std::tanh(z1)) - dy2 / 2.0 * (1.0 + std::tanh(z2));
+}
+
+std::vector<Vec2> read_waypoint_csv(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file + ": cannot open waypoint file");
+  std::vector<Vec2> points;
+  std::string line;
+  int number = 0;
+  bool first = true;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    if (first && line.find_first_of("xXyY") != std::string::npos) {
+      first = false;
+      continue;  // header line "x,y"
+    }
+    first = false;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    Vec2 p;
+    std::string rest;
+    if (!(fields >> p.x >> p.y) || (fields >> rest) || !std::isfinite(p.x) || !std::isfinite(p.y)) {
+      throw ConfigError(file + ": line " + std::to_string(number) +
+                        ": expected two finite numbers 'x,y', got '" + line + "'");
+    }
+    points.push_back(p);
+  }
+  if (points.size() < 2) throw ConfigError(file + ": needs at least 2 waypoints");
+  return points;
+}
+
+}  // namespace
+
+std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_directory) {
+  const std::string type =
+      c.text("type", "straight",
+             {"straight", "circle", "segments", "lane_change", "waypoints", "waypoints_csv"});
+  try {
+    if (type == "straight") {
+      const Vec2 start = point(c, "start", {0.0, 0.0});
+      const double heading = c.number("heading_rad", 0.0);
+      const double length = c.number("length_m", 200.0, Range::positive());
+      return std::make_shared<const Path>(Path::straight_line(start, heading, length));
+    }
+    if (type == "circle") {
+      const Vec2 center = point(c, "center", {0.0, 0.0});
+      const double radius = c.required_number("radius_m", Range::positive());
+      const bool ccw = c.boolean("counter_clockwise", true);
+      const double start_angle = c.number("start_angle_rad", 0.0);
+      return std::make_shared<const Path>(Path::circle(center, radius, ccw, start_angle));
+    }
+    if (type == "segments") {
+      PathBuilder builder(point(c, "start", {0.0, 0.0}), c.number("heading_rad", 0.0));
+      const YAML::Node pieces = c.raw("pieces");
+      if (!pieces || !pieces.IsSequence() || pieces.size() == 0) {
+        c.fail("pieces",
+               "expected a non-empty list of {line_m: L} or {arc_radius_m: R, arc_angle_rad: A}");
+      }
+      YAML::Node resolved(YAML::NodeType::Sequence);
+      for (std::size_t i = 0; i < pieces.size(); ++i) {
+        ConfigSection piece(pieces[i], c.full_key("pieces") + "[" + std::to_string(i) + "]",
+                            c.file());
+        if (piece.has("line_m")) {
+          builder.line(piece.number("line_m", 0.0, Range::positive()));
+        } else {
+          const double radius = piece.required_number("arc_radius_m", Range::positive());
+          const double angle = piece.required_number("arc_angle_rad", {-6.3, 6.3});
+          if (angle == 0.0) piece.fail("arc_angle_rad", "must be nonzero");
+          builder.arc(radius, angle);
+        }
+        piece.finish();
+        resolved.push_back(piece.resolved());
+      }
+      c.store("pieces", resolved);
+      return std::make_shared<const Path>(builder.build(c.boolean("closed", false)));
+    }
+    if (type == "lane_change") {
+      const double x_start = c.number("x_start_m", -30.0);
+      const double x_end = c.number("x_end_m", 150.0);
+      const double spacing = c.number("spacing_m", 1.0, {0.05, 10.0});
+      if (!(x_end > x_start + 2.0 * spacing))
+        c.fail("x_end_m", "must exceed x_start_m by 2 spacings");
+      std::vector<Vec2> points;
+      for (double x = x_start; x <= x_end + 1e-9; x += spacing)
+        points.push_back({x, lane_change_y(x)});
+      return std::make_shared<const Path>(Path::from_waypoints(points));
+    }
+    if (type == "waypoints") {
+      const YAML::Node list = c.raw("points");
+      if (!list || !list.IsSequence()) c.fail("points", "expected a list of [x, y]");
+      std::vector<Vec2> points;
+      YAML::Node resolved(YAML::NodeType::Sequence);
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        double x = 0.0, y = 0.0;
+        if (!list[i].IsSequence() || list[i].size() != 2 ||
+            !YAML::convert<double>::decode(list[i][0], x) ||
+            !YAML::convert<double>::decode(list[i][1], y) || !std::isfinite(x) ||
+            !std::isfinite(y)) {
+          c.fail("points",
+                 "element " + std::to_string(i) + ": expected [x, y] with two finite numbers");
+        }
+        points.push_back({x, y});
+        resolved.push_back(list[i]);
+      }
+      c.store("points", resolved);
+      return std::make_shared<const Path>(Path::from_waypoints(points));
+    }
+    // waypoints_csv
+    std::string csv = c.required_text("file");
+    std::filesystem::path csv_path(csv);
+    if (csv_path.is_relative()) csv_path = std::filesystem::path(base_directory) / csv_path;
+    return std::make_shared<const Path>(Path::from_waypoints(read_waypoint_csv(csv_path.string())));
+  } catch (const std::invalid_argument& error) {
+    throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error.what());
+  }
+}
+
+}  // namespace smoothsteer::io

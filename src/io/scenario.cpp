@@ -1,0 +1,270 @@
+// Scenario loading (docs/scenarios.md) and running.
+
+#include "smoothsteer/io/scenario.hpp"
+
+#include <filesystem>
+
+#include "smoothsteer/io/controller_registry.hpp"
+
+namespace smoothsteer::io {
+namespace {
+
+YAML::Node read_tire(ConfigSection c, TireParameters& tire) {
+  tire.stiffness_factor_b =
+      c.number("stiffness_factor_b", tire.stiffness_factor_b, Range::positive());
+  tire.shape_factor_c = c.number("shape_factor_c", tire.shape_factor_c, {0.0, 2.0, true, true});
+  tire.friction_mu = c.number("friction_mu", tire.friction_mu, Range::positive());
+  tire.curvature_factor_e = c.number("curvature_factor_e", tire.curvature_factor_e, {-100.0, 1.0});
+  c.finish();
+  return c.resolved();
+}
+
+//! Reads a vehicle mapping (from a vehicle file, overlaid with the scenario's own keys).
+YAML::Node read_vehicle(ConfigSection& c, Scenario& s) {
+  VehicleParameters& v = s.vehicle;
+  s.vehicle_name = c.text("name", "unnamed");
+  s.vehicle_source = c.text("source", "");
+  v.mass_kg = c.number("mass_kg", v.mass_kg, Range::positive());
+  v.yaw_inertia_kgm2 = c.number("yaw_inertia_kgm2", v.yaw_inertia_kgm2, Range::positive());
+  v.cg_to_front_axle_m = c.number("cg_to_front_axle_m", v.cg_to_front_axle_m, Range::positive());
+  v.cg_to_rear_axle_m = c.number("cg_to_rear_axle_m", v.cg_to_rear_axle_m, Range::positive());
+  v.cg_height_m = c.number("cg_height_m", v.cg_height_m, Range::non_negative());
+  v.gravity_mps2 = c.number("gravity_mps2", v.gravity_mps2, Range::positive());
+  const YAML::Node front = read_tire(c.section("front_tire"), v.front_tire);
+  const YAML::Node rear = read_tire(c.section("rear_tire"), v.rear_tire);
+  v.max_steering_angle_rad =
+      c.number("max_steering_angle_rad", v.max_steering_angle_rad, {0.0, 1.5, true, true});
+  v.max_steering_rate_radps =
+      c.number("max_steering_rate_radps", v.max_steering_rate_radps, Range::positive());
+  v.kinematic_below_mps = c.number("kinematic_below_mps", v.kinematic_below_mps, {0.1, 50.0});
+  v.kinetic_above_mps = c.number("kinetic_above_mps", v.kinetic_above_mps, {0.1, 50.0});
+  v.kinematic_relaxation_s =
+      c.number("kinematic_relaxation_s", v.kinematic_relaxation_s, Range::positive());
+  c.finish();
+  if (const std::string error = v.validation_error(); !error.empty()) {
+    throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error);
+  }
+  YAML::Node resolved = c.resolved();
+  resolved["front_tire"] = front;
+  resolved["rear_tire"] = rear;
+  return resolved;
+}
+
+template <typename Validated>
+void check(const ConfigSection& c, const Validated& value) {
+  if (const std::string error = value.validation_error(); !error.empty()) {
+    throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error);
+  }
+}
+
+}  // namespace
+
+void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides,
+                     const std::string& file) {
+  for (const std::string& entry : overrides) {
+    const std::size_t equals = entry.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw ConfigError(file + ": override '" + entry + "': expected key.path=value");
+    }
+    const std::string key = entry.substr(0, equals);
+    YAML::Node value;
+    try {
+      value = YAML::Load(entry.substr(equals + 1));
+    } catch (const YAML::Exception& error) {
+      throw ConfigError(file + ": override '" + entry + "': malformed value: " + error.msg);
+    }
+    std::vector<std::string> parts;
+    std::size_t begin = 0;
+    while (true) {
+      const std::size_t dot = key.find('.', begin);
+      parts.push_back(key.substr(begin, dot - begin));
+      if (dot == std::string::npos) break;
+      begin = dot + 1;
+    }
+    YAML::Node node = root;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      if (parts[i].empty()) throw ConfigError(file + ": override '" + entry + "': empty key part");
+      YAML::Node child = node[parts[i]];
+      if (child && !child.IsNull() && !child.IsMap()) {
+        throw ConfigError(file + ": override '" + entry + "': key '" + parts[i] +
+                          "' is not a mapping");
+      }
+      if (!child || child.IsNull()) node[parts[i]] = YAML::Node(YAML::NodeType::Map);
+      node.reset(node[parts[i]]);
+    }
+    if (parts.back().empty())
+      throw ConfigError(file + ": override '" + entry + "': empty key part");
+    node[parts.back()] = value;
+  }
+}
+
+Scenario load_scenario(const std::string& file, const std::vector<std::string>& overrides) {
+  YAML::Node root = load_yaml_file(file);
+  if (!root.IsMap()) throw ConfigError(file + ": expected a mapping at the top level");
+  apply_overrides(root, overrides, file);
+  const std::string directory = std::filesystem::path(file).parent_path().string();
+  Scenario s;
+  s.file = file;
+  s.overrides = overrides;
+  auto overridden = std::make_shared<std::set<std::string>>();
+  for (const std::string& o : overrides) overridden->insert(o.substr(0, o.find('=')));
+  ConfigSection c(root, "", file);
+  c.set_overridden_keys(overridden);
+  s.name = c.text("name", std::filesystem::path(file).stem().string());
+  s.description = c.text("description", "");
+  s.model = c.text("model", "dynamic", {"dynamic", "kinematic"});
+
+  // Vehicle: the file's keys, overlaid with the scenario's own keys.
+  YAML::Node vehicle_node = c.raw("vehicle");
+  if (vehicle_node && !vehicle_node.IsNull() && !vehicle_node.IsMap()) {
+    c.fail("vehicle", "expected a mapping");
+  }
+  YAML::Node merged(YAML::NodeType::Map);
+  std::string vehicle_label = file;
+  if (vehicle_node && vehicle_node["file"]) {
+    std::filesystem::path vehicle_file(vehicle_node["file"].as<std::string>());
+    if (vehicle_file.is_relative()) vehicle_file = std::filesystem::path(directory) / vehicle_file;
+    const YAML::Node from_file = load_yaml_file(vehicle_file.string());
+    if (!from_file.IsMap()) throw ConfigError(vehicle_file.string() + ": expected a mapping");
+    for (const auto& entry : from_file) merged[entry.first.as<std::string>()] = entry.second;
+    vehicle_label = file + " (vehicle file " + vehicle_file.string() + ")";
+  }
+  if (vehicle_node && vehicle_node.IsMap()) {
+    for (const auto& entry : vehicle_node) {
+      if (entry.first.as<std::string>() != "file")
+        merged[entry.first.as<std::string>()] = entry.second;
+    }
+  }
+  ConfigSection vehicle(merged, "vehicle", vehicle_label);
+  vehicle.set_overridden_keys(overridden);
+  YAML::Node resolved_vehicle = read_vehicle(vehicle, s);
+  if (vehicle_node && vehicle_node["file"]) resolved_vehicle["file"] = vehicle_node["file"];
+
+  ConfigSection actuator = c.section("actuator");
+  ActuatorParameters& a = s.actuator;
+  a.ideal = actuator.boolean("ideal", false);
+  a.bandwidth_hz = actuator.number("bandwidth_hz", a.bandwidth_hz, Range::positive());
+  a.dead_time_s = actuator.number("dead_time_s", a.dead_time_s, {0.0, 10.0});
+  a.max_angle_rad =
+      actuator.number("max_angle_rad", s.vehicle.max_steering_angle_rad, Range::positive());
+  a.max_rate_radps =
+      actuator.number("max_rate_radps", s.vehicle.max_steering_rate_radps, Range::positive());
+  actuator.finish();
+
+  ConfigSection speed = c.section("speed");
+  s.speed.initial_speed_mps = speed.number("initial_mps", 10.0, {0.0, 100.0, true, false});
+  s.speed.final_speed_mps =
+      speed.number("final_mps", s.speed.initial_speed_mps, {0.0, 100.0, true, false});
+  s.speed.acceleration_mps2 = speed.number("acceleration_mps2", 0.0, {0.0, 20.0});
+  s.speed.start_time_s = speed.number("start_time_s", 0.0, Range::non_negative());
+  speed.finish();
+  check(speed, s.speed);
+
+  ConfigSection sim = c.section("simulation");
+  SimulationParameters& p = s.simulation;
+  p.control_period_s = sim.number("control_period_s", p.control_period_s, {0.0, 1.0, true, false});
+  p.substep_s = sim.number("substep_s", p.substep_s, {0.0, 0.01, true, false});
+  p.duration_s = sim.number("duration_s", p.duration_s, {0.0, 3600.0, true, false});
+  p.stop_at_path_end = sim.boolean("stop_at_path_end", p.stop_at_path_end);
+  p.stop_beyond_path_end_m = sim.number("stop_beyond_path_end_m", p.stop_beyond_path_end_m);
+  p.matched_disturbance = sim.number("matched_disturbance", 0.0, {-1.0, 1.0});
+  p.position_noise_std_m = sim.number("position_noise_std_m", 0.0, Range::non_negative());
+  p.heading_noise_std_rad = sim.number("heading_noise_std_rad", 0.0, Range::non_negative());
+  p.noise_seed = static_cast<std::uint64_t>(sim.integer("noise_seed", 1, 0, 2147483647));
+  sim.finish();
+  check(sim, p);
+  if (const std::string error = a.validation_error(p.substep_s); !error.empty()) {
+    throw ConfigError(file + ": key 'actuator': " + error);
+  }
+
+  ConfigSection start = c.section("start");
+  s.start.position.x = start.number("x_m", 0.0);
+  s.start.position.y = start.number("y_m", 0.0);
+  s.start.heading_rad = start.number("heading_rad", 0.0, {-10.0, 10.0});
+  start.finish();
+
+  ConfigSection metrics = c.section("metrics");
+  s.metrics.reaching_threshold_m = metrics.number("reaching_threshold_m", 0.1, Range::positive());
+  s.metrics.steering_acceleration_limit_radps2 = metrics.number(
+      "steering_acceleration_limit_radps2", std::numeric_limits<double>::max(), Range::positive());
+  metrics.finish();
+  s.metrics.steering_angle_limit_rad = s.vehicle.max_steering_angle_rad;
+  s.metrics.steering_rate_limit_radps = s.vehicle.max_steering_rate_radps;
+
+  ConfigSection path = c.section("path");
+  s.path = make_path(path, directory);
+  path.finish();
+
+  s.controller = c.raw("controller");
+  YAML::Node resolved_controller;
+  make_controller(s.controller, "controller", file, s.path, s.vehicle, &resolved_controller,
+                  overridden);
+  c.finish();
+
+  YAML::Node all = c.resolved();
+  all["vehicle"] = resolved_vehicle;
+  all["actuator"] = actuator.resolved();
+  all["speed"] = speed.resolved();
+  all["simulation"] = sim.resolved();
+  all["start"] = start.resolved();
+  all["metrics"] = metrics.resolved();
+  all["path"] = path.resolved();
+  all["controller"] = resolved_controller;
+  s.parameters = to_json(all);
+  return s;
+}
+
+std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& s) {
+  if (s.model == "kinematic") return std::make_unique<KinematicVehicleModel>(s.vehicle);
+  return std::make_unique<DynamicSingleTrack>(s.vehicle);
+}
+
+std::unique_ptr<SteeringController> make_controller(const Scenario& s) {
+  return make_controller(s.controller, "controller", s.file, s.path, s.vehicle);
+}
+
+RunResult run_scenario(const Scenario& s, SteeringController& controller) {
+  RunResult result;
+  const std::unique_ptr<VehicleModel> model = make_vehicle_model(s);
+  result.simulation =
+      simulate(*s.path, *model, s.actuator, s.speed, s.simulation, s.start, controller);
+  result.metrics = compute_metrics(result.simulation.trace, s.metrics);
+  result.controller_name = controller.name();
+  return result;
+}
+
+RunResult run_scenario(const Scenario& s) {
+  const std::unique_ptr<SteeringController> controller = make_controller(s);
+  return run_scenario(s, *controller);
+}
+
+nlohmann::json to_json(const YAML::Node& node) {
+  if (!node || node.IsNull()) return nullptr;
+  if (node.IsSequence()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& item : node) list.push_back(to_json(item));
+    return list;
+  }
+  if (node.IsMap()) {
+    nlohmann::json object = nlohmann::json::object();
+    for (const auto& entry : node) object[entry.first.as<std::string>()] = to_json(entry.second);
+    return object;
+  }
+  const std::string& text = node.Scalar();
+  if (node.Tag() != "!") {  // plain (unquoted) scalars may be numbers or booleans
+    bool flag = false;
+    if (text == "true" || text == "false") {
+      YAML::convert<bool>::decode(node, flag);
+      return flag;
+    }
+    try {
+      std::size_t used = 0;
+      const double number = std::stod(text, &used);
+      if (used == text.size()) return number;
+    } catch (const std::exception&) {
+    }
+  }
+  return text;
+}
+
+}  // namespace smoothsteer::io

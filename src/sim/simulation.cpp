@@ -1,0 +1,228 @@
+#include "smoothsteer/sim/simulation.hpp"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/math/angles.hpp"
+
+namespace smoothsteer {
+namespace {
+
+std::string describe(const char* field, double value, const std::string& rule) {
+  return std::string("SimulationParameters: ") + field + " = " + std::to_string(value) + " " + rule;
+}
+
+using PlantArray = std::array<double, VehicleState::size>;
+
+PlantArray to_array(const VehicleState& d) {
+  return d.to_array();
+}
+
+//! Classic RK4 over one sub-step; the steering angle is interpolated linearly between the
+//! actuator output at the start and at the end of the sub-step.
+VehicleState rk4_step(const VehicleModel& model, const VehicleState& state, double h,
+                      double delta_start, double delta_end, double acceleration) noexcept {
+  const PlantArray x = state.to_array();
+  auto eval = [&](const PlantArray& y, double fraction) {
+    const double delta = delta_start + fraction * (delta_end - delta_start);
+    return to_array(model.derivative(VehicleState::from_array(y), delta, acceleration));
+  };
+  auto shifted = [&](const PlantArray& k, double scale) {
+    PlantArray y = x;
+    for (std::size_t i = 0; i < y.size(); ++i) y[i] += scale * k[i];
+    return y;
+  };
+  const PlantArray k1 = eval(x, 0.0);
+  const PlantArray k2 = eval(shifted(k1, 0.5 * h), 0.5);
+  const PlantArray k3 = eval(shifted(k2, 0.5 * h), 0.5);
+  const PlantArray k4 = eval(shifted(k3, h), 1.0);
+  PlantArray next = x;
+  for (std::size_t i = 0; i < next.size(); ++i) {
+    next[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+  }
+  return VehicleState::from_array(next);
+}
+
+bool finite(const VehicleState& s) {
+  for (double v : s.to_array()) {
+    if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string SimulationParameters::validation_error() const {
+  if (!std::isfinite(substep_s) || substep_s <= 0.0 || substep_s > 0.01) {
+    return describe("substep_s", substep_s, "must be in (0, 0.01]");
+  }
+  if (!std::isfinite(control_period_s) || control_period_s < substep_s || control_period_s > 1.0) {
+    return describe("control_period_s", control_period_s, "must be in [substep_s, 1]");
+  }
+  const double ratio = control_period_s / substep_s;
+  if (std::abs(ratio - std::round(ratio)) > 1e-6) {
+    return describe("control_period_s", control_period_s,
+                    "must be a whole multiple of substep_s = " + std::to_string(substep_s));
+  }
+  if (!std::isfinite(duration_s) || duration_s <= 0.0 || duration_s > 3600.0) {
+    return describe("duration_s", duration_s, "must be in (0, 3600]");
+  }
+  if (!std::isfinite(stop_beyond_path_end_m)) {
+    return describe("stop_beyond_path_end_m", stop_beyond_path_end_m, "must be finite");
+  }
+  if (!std::isfinite(matched_disturbance) || std::abs(matched_disturbance) > 1.0) {
+    return describe("matched_disturbance", matched_disturbance, "must be in [-1, 1] 1/m");
+  }
+  if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
+    return describe("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
+  }
+  if (!std::isfinite(heading_noise_std_rad) || heading_noise_std_rad < 0.0) {
+    return describe("heading_noise_std_rad", heading_noise_std_rad, "must be finite and >= 0");
+  }
+  return {};
+}
+
+void SimulationParameters::validate() const {
+  const std::string error = validation_error();
+  if (!error.empty()) throw std::invalid_argument(error);
+}
+
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator_parameters, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller) {
+  parameters.validate();
+  if (const std::string error = speed.validation_error(); !error.empty()) {
+    throw std::invalid_argument(error);
+  }
+  const VehicleParameters& car = vehicle.parameters();
+  SteeringActuator actuator(actuator_parameters, parameters.substep_s);
+  actuator.reset(0.0);
+  const int substeps =
+      static_cast<int>(std::lround(parameters.control_period_s / parameters.substep_s));
+  const double h = parameters.substep_s;
+  const long steps =
+      static_cast<long>(std::ceil(parameters.duration_s / parameters.control_period_s - 1e-9));
+
+  SimulationResult result;
+  result.trace.reserve(static_cast<std::size_t>(steps) + 1);
+  VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
+  vehicle.constrain(state, 0.0);
+  controller.reset(0.0);
+  double plant_disturbance = parameters.matched_disturbance;
+  if (auto* lead = dynamic_cast<LeadWheelController*>(&controller)) {
+    lead->set_matched_disturbance(parameters.matched_disturbance);
+    plant_disturbance = 0.0;
+  }
+  const double wheelbase = car.wheelbase_m();
+  auto effective = [&](double delta) {
+    return plant_disturbance == 0.0 ? delta
+                                    : std::atan(std::tan(delta) + wheelbase * plant_disturbance);
+  };
+
+  std::mt19937_64 engine(parameters.noise_seed);
+  std::normal_distribution<double> unit_normal(0.0, 1.0);
+  ProjectionHint rear_hint, front_hint;
+  ControllerOutput output;
+  double distance = 0.0;
+  double previous_command = 0.0, previous_rate = 0.0;
+  double delayed_input = 0.0;
+  result.stop_reason = "duration";
+
+  for (long k = 0; k <= steps; ++k) {
+    const double t = static_cast<double>(k) * parameters.control_period_s;
+    const Pose2 rear = rear_axle_pose(state, car);
+    ControllerInput input{rear.position, rear.heading_rad, state.vx_mps, speed.acceleration(t),
+                          parameters.control_period_s};
+    if (parameters.position_noise_std_m > 0.0 || parameters.heading_noise_std_rad > 0.0) {
+      input.rear_axle_position.x += parameters.position_noise_std_m * unit_normal(engine);
+      input.rear_axle_position.y += parameters.position_noise_std_m * unit_normal(engine);
+      input.heading_rad += parameters.heading_noise_std_rad * unit_normal(engine);
+    }
+    const Status status = controller.update(input, output);
+    if (status != Status::ok) {
+      result.status = status;
+      result.stop_reason = "controller_error";
+      break;
+    }
+    const double command = output.steering_angle_rad;
+    TraceSample sample;
+    sample.time_s = t;
+    sample.distance_m = distance;
+    sample.rear_axle = rear;
+    sample.speed_mps = state.vx_mps;
+    sample.acceleration_mps2 = input.acceleration_mps2;
+    const PathProjection rear_projection = path.project(rear.position, rear_hint);
+    const PathProjection front_projection =
+        path.project(front_axle_position(state, car), front_hint);
+    sample.path_arc_length_m = rear_projection.arc_length_m;
+    sample.path_curvature = rear_projection.curvature;
+    sample.lateral_error_m = rear_projection.lateral_error_m;
+    sample.heading_error_rad = wrap_angle(rear.heading_rad - rear_projection.heading_rad);
+    sample.front_lateral_error_m = front_projection.lateral_error_m;
+    sample.lead_lateral_error_m = output.diagnostics.lead_lateral_error_m;
+    sample.measured_lateral_error_m = output.diagnostics.lateral_error_m;
+    sample.sliding_variable = output.diagnostics.sliding_variable;
+    sample.lead_curvature = output.diagnostics.lead_curvature;
+    sample.steering_command_rad = command;
+    const double difference_rate =
+        k > 0 ? (command - previous_command) / parameters.control_period_s : 0.0;
+    sample.steering_command_rate_radps =
+        output.derivatives_available >= 1 ? output.steering_rate_radps : difference_rate;
+    sample.steering_command_acceleration_radps2 =
+        output.derivatives_available >= 2
+            ? output.steering_acceleration_radps2
+            : (k > 0 ? (sample.steering_command_rate_radps - previous_rate) /
+                           parameters.control_period_s
+                     : 0.0);
+    previous_command = command;
+    previous_rate = sample.steering_command_rate_radps;
+    sample.steering_actual_rad = actuator.angle();
+    sample.steering_actual_rate_radps = actuator.rate(delayed_input);
+    sample.steering_actual_acceleration_radps2 = actuator.acceleration(delayed_input);
+    sample.side_slip_rad = side_slip_angle(state);
+    sample.lateral_velocity_mps = state.vy_mps;
+    sample.yaw_rate_radps = state.yaw_rate_radps;
+    result.trace.push_back(sample);
+
+    if (parameters.stop_at_path_end && !path.is_closed() &&
+        rear_projection.arc_length_m > path.length() + parameters.stop_beyond_path_end_m) {
+      result.stop_reason = "path_end";
+      break;
+    }
+    if (k == steps) break;
+    // Zero-order hold of the command over the control period; the plant runs at the sub-step.
+    for (int j = 0; j < substeps; ++j) {
+      const double time = t + j * h;
+      delayed_input = actuator.push_command(command);
+      const double delta_start = effective(actuator.angle());
+      if (actuator.parameters().ideal) {
+        actuator.set_state({delayed_input, delayed_input, delayed_input});
+      } else {
+        actuator.advance(delayed_input);
+      }
+      const double delta_end = effective(actuator.angle());
+      const double acceleration = speed.acceleration(time + 0.5 * h);
+      const VehicleState before = state;
+      state = rk4_step(vehicle, state, h, actuator.parameters().ideal ? delta_end : delta_start,
+                       delta_end, acceleration);
+      vehicle.constrain(state, delta_end);
+      const double rear_vy_before = before.vy_mps - car.cg_to_rear_axle_m * before.yaw_rate_radps;
+      const double rear_vy_after = state.vy_mps - car.cg_to_rear_axle_m * state.yaw_rate_radps;
+      distance +=
+          0.5 * h *
+          (std::hypot(before.vx_mps, rear_vy_before) + std::hypot(state.vx_mps, rear_vy_after));
+    }
+    if (!finite(state)) {
+      result.non_finite = true;
+      result.stop_reason = "non_finite";
+      break;
+    }
+  }
+  result.final_state = state;
+  return result;
+}
+
+}  // namespace smoothsteer
