@@ -1,0 +1,79 @@
+#pragma once
+//! \file steering_limits.hpp
+//! Steering limits C1 (|delta| <= delta-bar) and the time-domain rate limit of C2
+//! (|d delta/dt| <= v delta-bar', paper Sec. II-B) for comparison controllers that do not
+//! respect them by construction, and the accounting of how often and by how much they hit them.
+//!
+//! SaturatedController wraps any SteeringController: it clamps the command to the angle limit,
+//! then limits its change per period to rate_radps * dt, and counts every clamp.
+
+#include <memory>
+#include <string>
+
+#include "smoothsteer/controller/steering_controller.hpp"
+
+namespace smoothsteer {
+
+struct SteeringLimits {
+  double angle_rad = 0.5;   //!< delta-bar, C1 [rad]
+  double rate_radps = 0.6;  //!< bound on |d delta/dt| [rad/s] (C2 times the speed)
+
+  //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
+  void validate() const;
+};
+
+//! How often and by how much the raw command of a controller exceeded the limits.
+struct SaturationStatistics {
+  long updates = 0;                    //!< successful update() calls
+  long angle_limited = 0;              //!< updates whose raw command exceeded angle_rad
+  long rate_limited = 0;               //!< updates whose (angle-clamped) change exceeded rate * dt
+  double max_angle_excess_rad = 0.0;   //!< largest |raw| - angle_rad
+  double max_rate_excess_radps = 0.0;  //!< largest |change| / dt - rate_radps
+
+  //! Fraction of updates with any clamp, in [0, 1].
+  double limited_fraction() const noexcept;
+  void reset() noexcept { *this = SaturationStatistics{}; }
+};
+
+//! The clamp itself: remembers the previous command for the rate limit.
+class SteeringSaturator {
+ public:
+  explicit SteeringSaturator(const SteeringLimits& limits);  // validates
+  //! Returns the limited command and records the clamps. `rate_radps` receives the applied
+  //! rate (limited change / dt). noexcept, allocation-free.
+  double apply(double raw_angle_rad, double period_s, double& rate_radps) noexcept;
+  void reset(double angle_rad) noexcept;
+  const SteeringLimits& limits() const noexcept { return limits_; }
+  const SaturationStatistics& statistics() const noexcept { return statistics_; }
+  double previous() const noexcept { return previous_; }
+
+ private:
+  SteeringLimits limits_;
+  SaturationStatistics statistics_;
+  double previous_ = 0.0;
+  double previous_rate_ = 0.0;
+};
+
+//! A comparison controller behind the common interface, with its output limited to C1/C2.
+//! The applied command's rate and acceleration are reported from differences (derivatives = 2).
+class SaturatedController final : public SteeringController {
+ public:
+  SaturatedController(std::unique_ptr<SteeringController> inner, const SteeringLimits& limits,
+                      std::string name);
+  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  const char* name() const noexcept override { return name_.c_str(); }
+
+  const SaturationStatistics& saturation() const noexcept { return saturator_.statistics(); }
+  const SteeringLimits& limits() const noexcept { return saturator_.limits(); }
+  SteeringController& inner() noexcept { return *inner_; }
+
+ private:
+  std::unique_ptr<SteeringController> inner_;
+  SteeringSaturator saturator_;
+  std::string name_;
+  double previous_rate_ = 0.0;
+  bool first_ = true;
+};
+
+}  // namespace smoothsteer

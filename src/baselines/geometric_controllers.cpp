@@ -1,0 +1,117 @@
+#include "smoothsteer/baselines/geometric_controllers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "baseline_common.hpp"
+
+namespace smoothsteer {
+
+void StanleyParameters::validate() const {
+  const char* owner = "StanleyParameters";
+  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
+                  "must be finite and > 0");
+  detail::require(detail::positive_finite(gain_per_s), owner, "gain_per_s", gain_per_s,
+                  "must be finite and > 0");
+  detail::require(detail::positive_finite(softening_mps), owner, "softening_mps", softening_mps,
+                  "must be finite and > 0");
+}
+
+StanleyController::StanleyController(const StanleyParameters& parameters,
+                                     std::shared_ptr<const Path> path)
+    : parameters_(parameters), path_(std::move(path)) {
+  parameters_.validate();
+  if (!path_) throw std::invalid_argument("StanleyController: path is null; a path is required");
+  reset(0.0);
+}
+
+void StanleyController::reset(double measured_steering_angle_rad) noexcept {
+  steering_ = std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
+  rear_hint_.reset();
+  front_hint_.reset();
+}
+
+Status StanleyController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+  if (!detail::valid_input(input)) return Status::invalid_input;
+  const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
+  const Vec2 front_axle =
+      input.rear_axle_position + parameters_.wheelbase_m * unit_from_heading(input.heading_rad);
+  ProjectionHint& hint = front_hint_;
+  const PathProjection front = path_->project(front_axle, hint);
+  const double previous = steering_;
+  if (input.speed_mps > 0.0) {
+    const double heading_error = wrap_angle(input.heading_rad - front.heading_rad);
+    steering_ = -heading_error - std::atan(parameters_.gain_per_s * front.lateral_error_m /
+                                           (parameters_.softening_mps + input.speed_mps));
+  }
+  output.steering_angle_rad = steering_;
+  output.steering_rate_radps = (steering_ - previous) / input.period_s;
+  output.steering_acceleration_radps2 = 0.0;
+  output.derivatives_available = 0;
+  output.diagnostics.sliding_variable = front.lateral_error_m;
+  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
+  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                           output.diagnostics);
+  return Status::ok;
+}
+
+void PurePursuitParameters::validate() const {
+  const char* owner = "PurePursuitParameters";
+  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
+                  "must be finite and > 0");
+  detail::require(detail::positive_finite(min_lookahead_m), owner, "min_lookahead_m",
+                  min_lookahead_m, "must be finite and > 0");
+  detail::require(std::isfinite(lookahead_time_s) && lookahead_time_s >= 0.0, owner,
+                  "lookahead_time_s", lookahead_time_s, "must be finite and >= 0");
+  detail::require(std::isfinite(max_lookahead_m) && max_lookahead_m >= min_lookahead_m, owner,
+                  "max_lookahead_m", max_lookahead_m, "must be finite and >= min_lookahead_m");
+}
+
+PurePursuitController::PurePursuitController(const PurePursuitParameters& parameters,
+                                             std::shared_ptr<const Path> path)
+    : parameters_(parameters), path_(std::move(path)) {
+  parameters_.validate();
+  if (!path_) {
+    throw std::invalid_argument("PurePursuitController: path is null; a path is required");
+  }
+  reset(0.0);
+}
+
+void PurePursuitController::reset(double measured_steering_angle_rad) noexcept {
+  steering_ = std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
+  rear_hint_.reset();
+  front_hint_.reset();
+}
+
+double PurePursuitController::lookahead_m(double speed_mps) const noexcept {
+  return std::clamp(
+      parameters_.min_lookahead_m + parameters_.lookahead_time_s * std::abs(speed_mps),
+      parameters_.min_lookahead_m, parameters_.max_lookahead_m);
+}
+
+Status PurePursuitController::update(const ControllerInput& input,
+                                     ControllerOutput& output) noexcept {
+  if (!detail::valid_input(input)) return Status::invalid_input;
+  const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
+  const double previous = steering_;
+  const double lookahead = lookahead_m(input.speed_mps);
+  const PathPoint target = path_->evaluate(rear.projection.arc_length_m + lookahead);
+  const Vec2 to_target = target.position - input.rear_axle_position;
+  const double distance = norm(to_target);
+  if (input.speed_mps > 0.0 && distance > 1e-6) {
+    const double bearing = wrap_angle(std::atan2(to_target.y, to_target.x) - input.heading_rad);
+    steering_ = std::atan(2.0 * parameters_.wheelbase_m * std::sin(bearing) / distance);
+  }
+  output.steering_angle_rad = steering_;
+  output.steering_rate_radps = (steering_ - previous) / input.period_s;
+  output.steering_acceleration_radps2 = 0.0;
+  output.derivatives_available = 0;
+  output.diagnostics.sliding_variable = lookahead;
+  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
+  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                           output.diagnostics);
+  return Status::ok;
+}
+
+}  // namespace smoothsteer

@@ -1,0 +1,72 @@
+#include "smoothsteer/baselines/lqr_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "baseline_common.hpp"
+
+namespace smoothsteer {
+
+void LqrParameters::validate() const {
+  const char* owner = "LqrParameters";
+  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
+                  "must be finite and > 0");
+  detail::require(detail::positive_finite(weight_lateral), owner, "weight_lateral", weight_lateral,
+                  "must be finite and > 0 (else e is not stabilised)");
+  detail::require(std::isfinite(weight_heading) && weight_heading >= 0.0, owner, "weight_heading",
+                  weight_heading, "must be finite and >= 0");
+  detail::require(detail::positive_finite(weight_steering), owner, "weight_steering",
+                  weight_steering, "must be finite and > 0");
+  detail::require(detail::positive_finite(min_speed_mps), owner, "min_speed_mps", min_speed_mps,
+                  "must be finite and > 0");
+}
+
+LqrGains lqr_gains(const LqrParameters& parameters, double speed_mps) noexcept {
+  const double v = std::max(std::abs(speed_mps), parameters.min_speed_mps);
+  const double lambda = parameters.wheelbase_m;
+  const double r = parameters.weight_steering * lambda * lambda / (v * v * v * v);
+  const double k1 = std::sqrt(parameters.weight_lateral / r);
+  const double k2 = std::sqrt(parameters.weight_heading / (v * v) / r + 2.0 * k1);
+  // w = v^2/lambda delta_fb = -k1 e - k2 v psi_e.
+  const double scale = lambda / (v * v);
+  return {scale * k1, scale * k2 * v};
+}
+
+LqrController::LqrController(const LqrParameters& parameters, std::shared_ptr<const Path> path)
+    : parameters_(parameters), path_(std::move(path)) {
+  parameters_.validate();
+  if (!path_) throw std::invalid_argument("LqrController: path is null; a path is required");
+  reset(0.0);
+}
+
+void LqrController::reset(double measured_steering_angle_rad) noexcept {
+  steering_ = std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
+  rear_hint_.reset();
+  front_hint_.reset();
+}
+
+Status LqrController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+  if (!detail::valid_input(input)) return Status::invalid_input;
+  const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
+  const double previous = steering_;
+  if (input.speed_mps > 0.0) {
+    const LqrGains gains = lqr_gains(parameters_, input.speed_mps);
+    const double feedforward = parameters_.curvature_feedforward
+                                   ? std::atan(parameters_.wheelbase_m * rear.projection.curvature)
+                                   : 0.0;
+    steering_ = feedforward - gains.lateral * rear.projection.lateral_error_m -
+                gains.heading * rear.heading_error_rad;
+  }
+  output.steering_angle_rad = steering_;
+  output.steering_rate_radps = (steering_ - previous) / input.period_s;
+  output.steering_acceleration_radps2 = 0.0;
+  output.derivatives_available = 0;
+  output.diagnostics.sliding_variable = rear.projection.lateral_error_m;
+  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
+  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                           output.diagnostics);
+  return Status::ok;
+}
+
+}  // namespace smoothsteer

@@ -1,0 +1,116 @@
+#include "smoothsteer/baselines/newton_raphson_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "baseline_common.hpp"
+
+namespace smoothsteer {
+
+void NewtonRaphsonParameters::validate() const {
+  const char* owner = "NewtonRaphsonParameters";
+  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
+                  "must be finite and > 0");
+  detail::require(detail::positive_finite(horizon_s), owner, "horizon_s", horizon_s,
+                  "must be finite and > 0");
+  detail::require(detail::positive_finite(gain_per_s), owner, "gain_per_s", gain_per_s,
+                  "must be finite and > 0");
+  detail::require(detail::positive_finite(min_speed_mps), owner, "min_speed_mps", min_speed_mps,
+                  "must be finite and > 0");
+  limits.validate();
+}
+
+ArcPrediction predict_arc(double steering_angle_rad, double wheelbase_m,
+                          double distance_m) noexcept {
+  // Local coordinates of the end of an arc of curvature k and length d:
+  //   forward = sin(k d) / k,  left = (1 - cos(k d)) / k,  dk/d delta = (1 + tan^2 delta)/lambda.
+  constexpr double taylor_threshold = 1e-4;
+  const double tangent = std::tan(steering_angle_rad);
+  const double k = tangent / wheelbase_m;
+  const double dk = (1.0 + tangent * tangent) / wheelbase_m;
+  const double d = distance_m;
+  const double kd = k * d;
+  ArcPrediction p;
+  p.heading_change_rad = kd;
+  double d_forward_dk = 0.0, d_left_dk = 0.0;
+  if (std::abs(kd) < taylor_threshold) {
+    p.forward_m = d - k * k * d * d * d / 6.0;
+    p.left_m = k * d * d / 2.0 - k * k * k * d * d * d * d / 24.0;
+    d_forward_dk = -k * d * d * d / 3.0;
+    d_left_dk = d * d / 2.0 - k * k * d * d * d * d / 8.0;
+  } else {
+    const double s = std::sin(kd), c = std::cos(kd);
+    p.forward_m = s / k;
+    p.left_m = (1.0 - c) / k;
+    d_forward_dk = (d * c * k - s) / (k * k);
+    d_left_dk = (d * s * k - (1.0 - c)) / (k * k);
+  }
+  p.d_forward_d_steering = d_forward_dk * dk;
+  p.d_left_d_steering = d_left_dk * dk;
+  return p;
+}
+
+NewtonRaphsonController::NewtonRaphsonController(const NewtonRaphsonParameters& parameters,
+                                                 std::shared_ptr<const Path> path)
+    : parameters_(parameters), path_(std::move(path)) {
+  parameters_.validate();
+  if (!path_) {
+    throw std::invalid_argument("NewtonRaphsonController: path is null; a path is required");
+  }
+  reset(0.0);
+}
+
+void NewtonRaphsonController::reset(double measured_steering_angle_rad) noexcept {
+  const double bound = parameters_.limits.angle_rad;
+  steering_ = std::isfinite(measured_steering_angle_rad)
+                  ? std::clamp(measured_steering_angle_rad, -bound, bound)
+                  : 0.0;
+  rate_ = 0.0;
+  rear_hint_.reset();
+  front_hint_.reset();
+}
+
+Status NewtonRaphsonController::update(const ControllerInput& input,
+                                       ControllerOutput& output) noexcept {
+  if (!detail::valid_input(input)) return Status::invalid_input;
+  const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
+  const double speed = input.speed_mps;
+  double rate = 0.0;
+  double offset = 0.0;
+  if (speed >= parameters_.min_speed_mps) {
+    const double distance = speed * parameters_.horizon_s;
+    // r(t + T): where the rear axle should be after T on the path.
+    const PathPoint reference = path_->evaluate(rear.projection.arc_length_m + distance);
+    const ArcPrediction arc = predict_arc(steering_, parameters_.wheelbase_m, distance);
+    const Vec2 forward = unit_from_heading(input.heading_rad);
+    const Vec2 left{-forward.y, forward.x};
+    const Vec2 predicted = input.rear_axle_position + arc.forward_m * forward + arc.left_m * left;
+    const Vec2 normal{-std::sin(reference.heading_rad), std::cos(reference.heading_rad)};
+    offset = dot(normal, predicted - reference.position);  // g - r along the normal
+    const double derivative =
+        dot(normal, arc.d_forward_d_steering * forward + arc.d_left_d_steering * left);
+    constexpr double smallest_derivative = 1e-9;
+    if (std::abs(derivative) > smallest_derivative) {
+      rate = -parameters_.gain_per_s * offset / derivative;
+    }
+  }
+  const double rate_bound = parameters_.limits.rate_radps;
+  const double angle_bound = parameters_.limits.angle_rad;
+  rate = std::clamp(std::isfinite(rate) ? rate : 0.0, -rate_bound, rate_bound);
+  const double previous = steering_;
+  steering_ = std::clamp(steering_ + rate * input.period_s, -angle_bound, angle_bound);
+  const double applied_rate = (steering_ - previous) / input.period_s;
+  output.steering_angle_rad = steering_;
+  output.steering_rate_radps = applied_rate;
+  output.steering_acceleration_radps2 = (applied_rate - rate_) / input.period_s;
+  output.derivatives_available = 1;
+  rate_ = applied_rate;
+  output.diagnostics.sliding_variable = offset;
+  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
+  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                           output.diagnostics);
+  return Status::ok;
+}
+
+}  // namespace smoothsteer

@@ -1,0 +1,99 @@
+// The numerically optimal reaching manoeuvre: its re-simulation satisfies C1/C2 and reaches the
+// path; it is never longer than a controller's reaching distance on the same case; HOSM keeps
+// its rate bound on the kinematic model.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "smoothsteer/baselines/optimal_reaching.hpp"
+#include "smoothsteer/baselines/reaching_benchmark.hpp"
+#include "smoothsteer/baselines/triple_integrator.hpp"
+#include "support/property.hpp"
+
+namespace smoothsteer {
+namespace {
+
+TEST(OptimalReaching, ResimulationSatisfiesConstraintsAndReachesThePath) {
+  const int cases = testing::property_cases(3);
+  for (int index = 0; index < cases; ++index) {
+    const auto seed = testing::case_seed(index);
+    testing::Random random(seed);
+    ReachingProblem problem;
+    problem.wheelbase_m = random.uniform(0.5, 2.7);
+    problem.steering_angle_bound_rad = random.uniform(0.3, 0.6);
+    problem.steering_rate_bound_per_m = random.uniform(0.3, 1.5);
+    problem.initial_lateral_error_m = random.uniform(-1.0, 1.0);
+    problem.initial_heading_rad = random.uniform(-0.6, 0.6);
+    problem.intervals = 100;
+    SCOPED_TRACE(testing::seed_message(seed));
+    const ReachingSolution solution = solve_optimal_reaching(problem);
+    ASSERT_TRUE(solution.converged) << solution.solver_status;
+    EXPECT_LT(solution.solve_time_s, 20.0);
+    const ReachingCheck check = resimulate_reaching(problem, solution);
+    EXPECT_LE(check.max_steering_excess_rad, 1e-6);
+    EXPECT_LE(check.max_rate_excess_per_m, 1e-6);
+    // Trapezoidal collocation is second order: the end state matches to O(h^2).
+    EXPECT_LT(std::abs(check.final_lateral_error_m), 2e-3);
+    EXPECT_LT(std::abs(check.final_heading_rad), 2e-3);
+    EXPECT_LT(std::abs(check.final_steering_rad), 1e-6);
+  }
+}
+
+TEST(OptimalReaching, InvalidProblemNamesTheField) {
+  ReachingProblem problem;
+  problem.initial_steering_rad = 0.9;
+  try {
+    problem.validate();
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("initial_steering_rad = 0.9"), std::string::npos);
+  }
+}
+
+TEST(ReachingBenchmark, OptimumIsNeverLongerThanAnyControllerAndHosmKeepsItsRate) {
+  ReachingBenchmarkOptions options;
+  options.intervals = 100;
+  options.horizon_m = 12.0;
+  const ReachingBenchmarkResult result = run_reaching_benchmark(options);
+  ASSERT_EQ(result.cases.size(), 3u);
+  for (const ReachingBenchmarkCase& c : result.cases) {
+    SCOPED_TRACE("psi0 = " + std::to_string(c.initial_heading_rad));
+    ASSERT_TRUE(c.optimum.converged) << c.optimum.solver_status;
+    ASSERT_TRUE(c.relaxed_optimum.converged) << c.relaxed_optimum.solver_status;
+    ASSERT_TRUE(std::isfinite(c.proposed_distance_m));
+    ASSERT_TRUE(std::isfinite(c.hosm_distance_m));
+    // The relaxed optimum ends in the controllers' "reached" set: a lower bound for both.
+    EXPECT_LE(c.relaxed_optimum.distance_m, c.proposed_distance_m + 1e-3);
+    EXPECT_LE(c.relaxed_optimum.distance_m, c.hosm_distance_m + 1e-3);
+    EXPECT_LE(c.relaxed_optimum.distance_m, c.optimum.distance_m + 1e-6);
+    // The rear axle cannot reach the path exactly before the exact optimum does: the proposed
+    // controller only converges asymptotically, so its distance exceeds the exact optimum too.
+    EXPECT_LE(c.optimum.distance_m, c.proposed_distance_m);
+    // HOSM integrates |delta'| <= delta-bar'; the proposed chain keeps it by its invariant sets.
+    EXPECT_LE(c.hosm_max_rate_per_m, result.steering_rate_bound_per_m * (1.0 + 1e-9));
+    EXPECT_LE(c.proposed_max_rate_per_m, result.steering_rate_bound_per_m * 1.01);
+  }
+}
+
+TEST(TripleIntegrator, TimeOptimalSurfaceReachesTheOriginFromRandomStarts) {
+  const int cases = testing::property_cases(40);
+  for (int index = 0; index < cases; ++index) {
+    const auto seed = testing::case_seed(index);
+    testing::Random random(seed);
+    double x1 = random.uniform(-3, 3), x2 = random.uniform(-3, 3), x3 = random.uniform(-3, 3);
+    const double bound = 2.0, h = 1e-3;
+    bool reached = false;
+    for (int step = 0; step < 40000 && !reached; ++step) {
+      const double u = bound * triple_integrator_switching(x1, x2, x3, bound).control_sign;
+      x1 += h * x2 + 0.5 * h * h * x3 + h * h * h * u / 6.0;
+      x2 += h * x3 + 0.5 * h * h * u;
+      x3 += h * u;
+      reached = std::abs(x1) < 1e-3 && std::abs(x2) < 1e-2 && std::abs(x3) < 0.1;
+    }
+    EXPECT_TRUE(reached) << testing::seed_message(seed);
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer
