@@ -4,10 +4,13 @@
 #include <exception>
 
 #include "commands.hpp"
+#include "smoothsteer/baselines/scenario_comparison.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"smoothsteer: n-smooth, differentially bounded path-tracking control"};
   app.require_subcommand(1);
+  // Scenario files may name every comparison controller (docs/baselines.md).
+  smoothsteer::register_comparison_controllers();
   smoothsteer::cli::add_run_commands(app);
   smoothsteer::cli::add_tune_command(app);
   smoothsteer::cli::add_compare_command(app);

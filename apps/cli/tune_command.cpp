@@ -23,6 +23,7 @@ struct TuneArguments {
   std::string out;
   int order = 2;
   double max_steering_acceleration = std::numeric_limits<double>::quiet_NaN();
+  double max_steering_rate = std::numeric_limits<double>::quiet_NaN();
   TuningOptions options;
 };
 
@@ -58,6 +59,9 @@ void print_summary(const GainSchedule& schedule, std::ostream& out) {
 
 void run_tune(const TuneArguments& arguments) {
   VehicleLimits vehicle = load_vehicle_limits(arguments.vehicle_file);
+  if (!std::isnan(arguments.max_steering_rate)) {
+    vehicle.max_steering_rate_radps = arguments.max_steering_rate;
+  }
   if (!std::isnan(arguments.max_steering_acceleration)) {
     vehicle.max_steering_acceleration_radps2 = arguments.max_steering_acceleration;
   }
@@ -92,6 +96,8 @@ void add_tune_command(CLI::App& app) {
   tune->add_option("--speeds", arguments->speeds, "FIRST:LAST:STEP in m/s")->capture_default_str();
   tune->add_option("--out", arguments->out, "schedule CSV to write")->required();
   tune->add_option("--order", arguments->order, "n: 1 (C0) or 2 (C1)")->capture_default_str();
+  tune->add_option("--max-steering-rate", arguments->max_steering_rate,
+                   "steering rate limit [rad/s]; overrides the vehicle file");
   tune->add_option("--max-steering-acceleration", arguments->max_steering_acceleration,
                    "steering acceleration limit [rad/s^2]; overrides the vehicle file");
   tune->add_option("--max-longitudinal-acceleration",

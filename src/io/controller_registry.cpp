@@ -5,22 +5,22 @@
 #include <mutex>
 #include <numbers>
 
+#include <filesystem>
+#include <stdexcept>
+
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/tuning/schedule_files.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
 
 namespace smoothsteer::io {
 namespace {
 
 //! The paper's controller (Sec. II-III). Defaults follow Sec. IV-A: n = 2 with the fictive
 //! wheelbase of eq. (cornering_constr), the lead wheel on the path, k_rob = 0.3 (notes §5).
-std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
-                                                    std::shared_ptr<const Path> path,
-                                                    const VehicleParameters& vehicle) {
-  ControllerParameters p;
-  const double wheelbase = vehicle.wheelbase_m();
-  p.vehicle_wheelbase_m = wheelbase;
-  p.order = c.integer("order", 2, 0, ControllerParameters::max_order);
-  p.lead_curvature_bound = c.number("lead_curvature_bound", 0.2, Range::positive());
+//! Keys shared by the fixed and the scheduled lead-wheel controller.
+void read_law_options(ConfigSection& c, ControllerParameters& p) {
   p.k_rob = c.number("k_rob", 0.3, {0.0, 1.0, false, true});
+  p.boundary_layer = c.number("boundary_layer", 0.0, Range::non_negative());
   p.approach_angle_rad = c.number("approach_angle_rad", std::numbers::pi / 2.0,
                                   {0.0, std::numbers::pi / 2.0, true, false});
   const std::string surface = c.text("surface", "global", {"global", "paper"});
@@ -30,6 +30,17 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
       target == "rear_axle" ? CorneringTarget::rear_axle : CorneringTarget::lead_wheel;
   p.max_substep_fraction = c.number("max_substep_fraction", 0.1, {0.0, 1.0, true, false});
   p.max_substeps = c.integer("max_substeps", 64, 1, 10000);
+}
+
+std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
+                                                    std::shared_ptr<const Path> path,
+                                                    const VehicleParameters& vehicle) {
+  ControllerParameters p;
+  const double wheelbase = vehicle.wheelbase_m();
+  p.vehicle_wheelbase_m = wheelbase;
+  p.order = c.integer("order", 2, 0, ControllerParameters::max_order);
+  p.lead_curvature_bound = c.number("lead_curvature_bound", 0.2, Range::positive());
+  read_law_options(c, p);
   // Wheelbases: explicit list, or the paper's choice: n = 1 -> lambda = lambda_veh (eq. ext1);
   // n = 2 -> lambda = sqrt(lambda_veh^2 - lambda_l^2) (eq. cornering_constr).
   if (c.has("wheelbases_m")) {
@@ -58,9 +69,30 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
   return std::make_unique<LeadWheelController>(p, std::move(path));
 }
 
+//! The lead-wheel controller with a gain schedule from `smoothsteer tune` (docs/tuning.md):
+//! `schedule` is the CSV, relative to the scenario file; lambda, lambda_l and kbar_l follow |v|.
+std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
+                                                              std::shared_ptr<const Path> path,
+                                                              const VehicleParameters& vehicle) {
+  ControllerParameters base;
+  base.vehicle_wheelbase_m = vehicle.wheelbase_m();
+  read_law_options(c, base);
+  std::filesystem::path schedule_file = c.required_text("schedule");
+  if (schedule_file.is_relative()) {
+    schedule_file = std::filesystem::path(c.file()).parent_path() / schedule_file;
+  }
+  try {
+    return std::make_unique<ScheduledController>(read_schedule_csv(schedule_file.string(), base),
+                                                 std::move(path));
+  } catch (const std::invalid_argument& error) {
+    c.fail("schedule", error.what());  // [[noreturn]]
+  }
+}
+
 struct Registry {
   std::mutex mutex;
-  std::map<std::string, ControllerFactory> factories{{"lead_wheel", make_lead_wheel}};
+  std::map<std::string, ControllerFactory> factories{
+      {"lead_wheel", make_lead_wheel}, {"scheduled_lead_wheel", make_scheduled_lead_wheel}};
 };
 
 Registry& registry() {
