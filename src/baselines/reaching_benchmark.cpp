@@ -135,7 +135,7 @@ ResultsTable ReachingBenchmarkResult::table() const {
   ResultsTable t;
   t.title = "Tab. roc_vx: travelled distance until the path is reached";
   t.header = {"psi0_rad",         "optimal_m",        "optimal_relaxed_m", "proposed_m",
-              "hosm_m",           "proposed/optimal", "hosm/optimal",      "paper_optimal_m",
+              "hosm_m",           "proposed/optimal_relaxed", "hosm/optimal_relaxed", "paper_optimal_m",
               "paper_proposed_m", "paper_hosm_m",     "optimal_solve_s"};
   const double paper[3][3] = {{1.42, 1.69, 1.82}, {1.17, 1.38, 2.14}, {1.91, 2.24, 3.00}};
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -147,8 +147,10 @@ ResultsTable ReachingBenchmarkResult::table() const {
     t.rows.push_back({ResultsTable::number(c.initial_heading_rad, 4), ResultsTable::number(optimal),
                       ResultsTable::number(relaxed), ResultsTable::number(c.proposed_distance_m),
                       ResultsTable::number(c.hosm_distance_m),
-                      ResultsTable::number(c.proposed_distance_m / optimal, 2),
-                      ResultsTable::number(c.hosm_distance_m / optimal, 2),
+                      // Ratios against the optimum into the SAME band as the controllers; the
+                      // exact optimum (to e = psi = delta = 0) would favour them unfairly.
+                      ResultsTable::number(c.proposed_distance_m / relaxed, 2),
+                      ResultsTable::number(c.hosm_distance_m / relaxed, 2),
                       has_paper ? ResultsTable::number(paper[i][0], 2) : "",
                       has_paper ? ResultsTable::number(paper[i][1], 2) : "",
                       has_paper ? ResultsTable::number(paper[i][2], 2) : "",
@@ -166,7 +168,8 @@ ResultsTable ReachingBenchmarkResult::table() const {
       "Reached: |e| <= " + ResultsTable::number(o.lateral_tolerance_m, 3) +
           " m and |psi| <= " + ResultsTable::number(o.heading_tolerance_rad, 3) +
           " rad from then on (controllers); e = psi = delta = 0 (optimal); optimal_relaxed "
-          "ends in the controllers' set with delta free (a lower bound for any C1/C2 controller).",
+          "ends in the controllers' set with delta free (a lower bound for any C1/C2 controller) "
+          "and is the reference of the ratios.",
       "Proposed: n = 1, k_rob = 0. HOSM: psi_bar = " +
           ResultsTable::number(hosm_heading_bound_rad, 2) +
           " rad, tuned for psi0 = 0. Optimal: trapezoidal collocation, N = " +

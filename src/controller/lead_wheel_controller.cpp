@@ -67,6 +67,16 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
   }
   const int n = parameters.order;
   const double steering = n > 0 ? vehicle_steering_angle_of_chain() : last_steering_angle_;
+  // For n >= 2, d delta_veh / ds depends on (delta_1, delta_2) only: keep it too, so that the
+  // command stays C^1 across retunes and a gain schedule adds no steering-acceleration spikes.
+  double rate_per_meter = 0.0;
+  if (n >= 2) {
+    const double* old_wheelbases = parameters_.wheelbases_m.data();
+    rate_per_meter =
+        vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / old_wheelbases[0]) *
+        (std::tan(angles_[1]) / (old_wheelbases[1] * std::cos(angles_[0])) -
+         std::tan(angles_[0]) / old_wheelbases[0]);
+  }
   parameters_ = parameters;
   bounds_ = compute_chain_bounds(parameters_);
   chain_length_squared_ = 0.0;
@@ -74,10 +84,16 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
     const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared_ += lambda * lambda;
   }
+  // No clamping into the new sets: a jump of the state would be a kink in delta_veh. A state
+  // outside a shrunken set returns under the chain's flow (integrate_chain never pushes it out).
   if (n > 0) angles_[0] = front_angle_from_vehicle(steering);
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
+  if (n >= 2) {
+    // delta_1' = tan(delta_2) / (lambda_2 cos delta_1) - tan(delta_1) / lambda_1, solved for delta_2.
+    const double* wheelbases = parameters_.wheelbases_m.data();
+    const double front_rate =
+        rate_per_meter / vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / wheelbases[0]);
+    angles_[1] = std::atan(wheelbases[1] * std::cos(angles_[0]) *
+                           (front_rate + std::tan(angles_[0]) / wheelbases[0]));
   }
   return Status::ok;
 }
@@ -173,11 +189,9 @@ Status LeadWheelController::update(const ControllerInput& input,
   } else {
     const double ratio = parameters_.vehicle_wheelbase_m / wheelbases[0];
     const double front = angles_[0];
-    const double c = std::cos(front), s = std::sin(front);
-    const double denominator = c * c + ratio * ratio * s * s;
-    const double gain = ratio / denominator;  // d delta_veh / d delta_1
-    const double curvature_of_gain =
-        -ratio * std::sin(2.0 * front) * (ratio * ratio - 1.0) / (denominator * denominator);
+    const double gain = vehicle_angle_gain(front, ratio);  // d delta_veh / d delta_1
+    // d gain / d delta_1 = -gain^2 sin(2 delta_1) (r^2 - 1) / r
+    const double curvature_of_gain = -gain * gain * std::sin(2.0 * front) * (ratio * ratio - 1.0) / ratio;
     const FrontAngleDerivatives d = front_angle_derivatives(angles_, wheelbases, n, applied_curvature);
     const double speed = std::abs(input.speed_mps);
     const double front_rate = speed * d.first;

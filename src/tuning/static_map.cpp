@@ -80,6 +80,11 @@ MapValue StaticMap::lookup_node(int ratio_index, double q) const noexcept {
 }
 
 MapValue StaticMap::lookup(double ratio, double q) const noexcept {
+  const MapValue value = interpolate(ratio, q);
+  return {lookup_safety_factor * value.rate, lookup_safety_factor * value.acceleration};
+}
+
+MapValue StaticMap::interpolate(double ratio, double q) const noexcept {
   const double position =
       (std::clamp(ratio, options_.ratio_min, options_.ratio_max) - options_.ratio_min) /
       (options_.ratio_max - options_.ratio_min) * (options_.ratio_samples - 1);

@@ -155,6 +155,38 @@ TEST(ChainMatchesPaper, SecondDerivativeMatchesFiniteDifferenceForLongerChains) 
   }
 }
 
+TEST(ChainBounds, RateBoundEqualsBruteForce) {
+  // compute_chain_bounds() finds sup |d delta_veh/ds| with 64 samples and golden-section search;
+  // brute force over 200 000 samples of the invariant set must not exceed it.
+  for (int c = 0; c < property_cases(100); ++c) {
+    const auto seed = case_seed(c);
+    Random random(seed);
+    ControllerParameters parameters;
+    parameters.order = random.integer(1, 4);
+    parameters.vehicle_wheelbase_m = random.uniform(1.5, 4.0);
+    for (int i = 0; i < parameters.order; ++i) {
+      parameters.wheelbases_m[static_cast<std::size_t>(i)] =
+          random.uniform(i == 0 ? 0.3 : 0.1, 0.95) * parameters.vehicle_wheelbase_m;
+    }
+    parameters.lead_curvature_bound =
+        random.uniform(0.05, 0.9) / parameters.wheelbases_m[static_cast<std::size_t>(parameters.order - 1)];
+    if (!parameters.is_valid()) continue;
+    SCOPED_TRACE(seed_message(seed));
+    const ChainBounds bounds = compute_chain_bounds(parameters);
+    const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
+    const double kbar_1 = bounds.curvature[1], lambda_1 = parameters.wheelbases_m[0];
+    double brute = 0.0;
+    constexpr int samples = 200000;
+    for (int k = 0; k <= samples; ++k) {
+      const double angle = bounds.angle[0] * k / samples;
+      brute = std::max(brute, vehicle_angle_gain(angle, ratio) *
+                                  (kbar_1 / std::cos(angle) + std::tan(angle) / lambda_1));
+    }
+    EXPECT_GE(bounds.steering_rate_per_meter, brute * (1.0 - 1e-12));
+    EXPECT_LE(bounds.steering_rate_per_meter, brute * (1.0 + 1e-6));
+  }
+}
+
 TEST(ChainMatchesPaper, KappaLMaxNeedsTheSquareRoot) {
   // Notes §2: eq. (kappalmax) with the square root makes the invariant set of delta_1 exactly
   // [-dbar, dbar]; the printed form without it does not (and is dimensionally wrong).

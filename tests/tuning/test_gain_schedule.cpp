@@ -39,14 +39,25 @@ std::string describe(const VehicleLimits& v) {
 }
 
 TEST(GainSchedule, LimitsHoldAtEveryGridSpeed) {
-  for (int k = 0; k < property_cases(6); ++k) {
+  int feasible = 0;
+  const int cases = property_cases(6);
+  for (int k = 0; k < cases; ++k) {
     Random random(case_seed(k) + 21);
     const VehicleLimits vehicle = random_vehicle(random);
     TuningOptions options;
     options.max_longitudinal_acceleration_mps2 = random.uniform(0.0, 3.0);
-    SCOPED_TRACE(seed_message(case_seed(k) + 21) + " " + describe(vehicle));
-    const GainSchedule schedule =
-        compute_gain_schedule(vehicle, options, speed_grid(1.0, 30.0, 1.0), shared_map());
+    SCOPED_TRACE(seed_message(case_seed(k) + 21) + " " + describe(vehicle) +
+                 " dv/dt=" + std::to_string(options.max_longitudinal_acceleration_mps2));
+    GainSchedule schedule;
+    try {
+      schedule = compute_gain_schedule(vehicle, options, speed_grid(1.0, 30.0, 1.0), shared_map());
+    } catch (const InfeasibleLimits& error) {
+      // Tight random limits can be infeasible at 30 m/s: that is a valid answer if it says so.
+      EXPECT_GT(error.speed_mps(), 0.0);
+      EXPECT_NE(std::string(error.what()).find(error.binding_limit()), std::string::npos);
+      continue;
+    }
+    ++feasible;
     ASSERT_EQ(schedule.entries().size(), 30u);
     for (const ScheduleEntry& e : schedule.entries()) {
       SCOPED_TRACE("v=" + std::to_string(e.speed_mps));
@@ -66,6 +77,7 @@ TEST(GainSchedule, LimitsHoldAtEveryGridSpeed) {
           vehicle.wheelbase_m * vehicle.wheelbase_m, 1e-9);  // eq. cornering_constr
     }
   }
+  EXPECT_GE(feasible, (cases + 1) / 2) << "most random vehicles should be feasible";
 }
 
 TEST(GainSchedule, RelaxingALimitNeverLowersTheLeadCurvature) {

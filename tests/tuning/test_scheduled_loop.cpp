@@ -118,6 +118,44 @@ TEST(ScheduledLoop, LimitsHoldWhileTheSpeedChanges) {
   }
 }
 
+TEST(Retune, KeepsTheSteeringRateForTheC1Controller) {
+  // n = 2: d delta_veh/ds depends on (delta_1, delta_2) only, so retune() can and does keep it;
+  // otherwise every retune of a gain schedule would be a step in the steering rate.
+  auto path = std::make_shared<const Path>(Path::straight_line({-100.0, 0.0}, 0.0, 400.0));
+  int compared = 0;
+  for (int k = 0; k < property_cases(40); ++k) {
+    Random random(case_seed(k) + 34);
+    const double vehicle = random.uniform(2.0, 3.5);
+    const double theta = random.uniform(0.2, 0.8);
+    const ControllerParameters a = ControllerParameters::paper_c1(
+        vehicle, random.uniform(0.1, 0.9) * vehicle, std::sin(theta) / vehicle, 0.3);
+    const ControllerParameters b = ControllerParameters::paper_c1(
+        vehicle, random.uniform(0.1, 0.9) * vehicle, std::sin(theta * random.uniform(0.9, 1.1)) / vehicle, 0.3);
+    SCOPED_TRACE(seed_message(case_seed(k) + 34));
+    LeadWheelController controller(a, path);
+    ControllerOutput out;
+    const Vec2 position{0.0, random.uniform(-5.0, 5.0)};
+    const double heading = random.uniform(-0.5, 0.5);
+    for (int step = 0; step < random.integer(5, 40); ++step) {
+      controller.update({position, heading, 5.0, 0.0, 0.02}, out);
+    }
+    // With v = 1 m/s and a vanishing period the output rate is d delta_veh / ds itself.
+    const ControllerInput probe{position, heading, 1.0, 0.0, 1e-12};
+    ASSERT_EQ(controller.update(probe, out), Status::ok);
+    const double angle_before = out.steering_angle_rad, rate_before = out.steering_rate_radps;
+    ASSERT_EQ(controller.retune(b), Status::ok);
+    const bool clamped = std::abs(controller.chain_angles()[0]) >= controller.bounds().angle[0] ||
+                         std::abs(controller.chain_angles()[1]) >= controller.bounds().angle[1];
+    ASSERT_EQ(controller.update(probe, out), Status::ok);
+    EXPECT_NEAR(out.steering_angle_rad, angle_before, 1e-9);
+    if (!clamped) {
+      EXPECT_NEAR(out.steering_rate_radps, rate_before, 1e-9 * (1.0 + std::abs(rate_before)));
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 0);
+}
+
 TEST(Retune, KeepsSteeringContinuousAndRejectsBadParameters) {
   auto path = std::make_shared<const Path>(Path::circle({0.0, 0.0}, 40.0));
   for (int k = 0; k < property_cases(40); ++k) {

@@ -7,8 +7,8 @@
 //!   |delta| <= delta-bar (C1),  |u| <= delta-bar' (C2),
 //!   x(0) given,  x(S) = 0  (e = psi = delta = 0: with u = 0 afterwards the car stays on the path).
 //! Direct transcription: trapezoidal collocation on N intervals of length S/N with S a decision
-//! variable, solved by Ipopt with the exact, hand-derived constraint Jacobian and a limited-memory
-//! quasi-Newton Hessian. The terminal set can be relaxed to |e| <= tol_e, |psi| <= tol_psi and
+//! variable, solved by Ipopt with the exact, hand-derived constraint Jacobian and Hessian of the
+//! Lagrangian (Ipopt's derivative checker finds no error in either). The terminal set can be relaxed to |e| <= tol_e, |psi| <= tol_psi and
 //! delta free: the optimum of that problem is a lower bound on the travel of ANY controller that
 //! satisfies C1/C2 and enters that set (used by the tests against the controllers).
 
@@ -32,6 +32,11 @@ struct ReachingProblem {
   int intervals = 150;           //!< N collocation intervals
   double max_iterations = 3000;  //!< Ipopt max_iter
   double tolerance = 1e-9;       //!< Ipopt tol
+  //! true: Ipopt's L-BFGS first (fast), the exact Hessian of the Lagrangian (hand-derived,
+  //! eval_h) for a start where it stalls; false: L-BFGS only.
+  bool exact_hessian = true;
+  //! Runs Ipopt's finite-difference derivative test (printing) before solving; for development.
+  bool check_derivatives = false;
 
   //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
   void validate() const;

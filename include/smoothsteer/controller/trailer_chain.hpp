@@ -33,6 +33,10 @@ struct ChainBounds {
   double steering_rate_per_meter = 0.0;
 };
 
+//! d delta_veh / d delta_1 for delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1
+//! (notes §3): r / (cos^2 delta_1 + r^2 sin^2 delta_1).
+double vehicle_angle_gain(double front_angle, double ratio) noexcept;
+
 //! Propagates kbar_n down the chain: kbar_{i-1} = kbar_i / sqrt(1 - kbar_i^2 lambda_i^2).
 //! Requires valid parameters.
 ChainBounds compute_chain_bounds(const ControllerParameters& parameters);
@@ -65,9 +69,11 @@ void stationary_chain(double front_angle, const double* wheelbases, int order,
                       ChainAngles& delta) noexcept;
 
 //! One RK4 step of the chain over rear arc length ds with constant lead curvature, integrated in
-//! tan(delta_i) (no trigonometry inside the stages); clamps every
-//! angle to its invariant set afterwards (the exact flow never leaves it; this removes the
-//! integration error at the boundary).
+//! tan(delta_i) (no trigonometry inside the stages). Afterwards every angle is clamped to
+//! max(its invariant set, its value before the step): the exact flow never leaves the set, so
+//! this only removes the integration error at the boundary; and an angle that a retune left
+//! outside a shrunken set is never moved inward by a jump, only by the flow, which points inward
+//! there (LeadWheelController::retune).
 void integrate_chain(ChainAngles& delta, const double* wheelbases, int order,
                      double lead_curvature, double ds, const ChainAngles& angle_bound) noexcept;
 
