@@ -1,6 +1,7 @@
 #include "smoothsteer/controller/controller_parameters.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -18,87 +19,87 @@ std::string wheelbase_name(int index) {
   return "wheelbases_m[" + std::to_string(index) + "] (lambda_" + std::to_string(index + 1) + ")";
 }
 
-}  // namespace
-
-std::string ControllerParameters::validation_error() const {
-  if (order < 0 || order > max_order) {
-    return describe("order", order, "must be in [0, " + std::to_string(max_order) + "]");
+//! Every rule of the parameters, once. `fail(field, value, rule)` is called for the first broken
+//! rule with lazily evaluated field and rule texts, and its result returned; true means valid.
+//! is_valid() passes a no-op and so never builds a string; validation_error() formats them.
+template <typename Fail>
+bool check_rules(const ControllerParameters& p, Fail&& fail) {
+  auto text = [](const char* literal) { return [literal] { return std::string(literal); }; };
+  auto finite_positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  constexpr int max_order = ControllerParameters::max_order;
+  if (p.order < 0 || p.order > max_order) {
+    return fail(text("order"), p.order,
+                [] { return "must be in [0, " + std::to_string(max_order) + "]"; });
   }
-  if (!std::isfinite(vehicle_wheelbase_m) || vehicle_wheelbase_m <= 0.0) {
-    return describe("vehicle_wheelbase_m", vehicle_wheelbase_m, "must be finite and > 0");
+  if (!finite_positive(p.vehicle_wheelbase_m)) {
+    return fail(text("vehicle_wheelbase_m"), p.vehicle_wheelbase_m,
+                text("must be finite and > 0"));
   }
-  for (int i = 0; i < order; ++i) {
-    const double lambda = wheelbases_m[static_cast<std::size_t>(i)];
-    if (!std::isfinite(lambda) || lambda <= 0.0) {
-      return describe(wheelbase_name(i), lambda,
-                      "must be finite and > 0 (reversing is selected by v < 0, not by the sign)");
+  for (int i = 0; i < p.order; ++i) {
+    const double lambda = p.wheelbases_m[static_cast<std::size_t>(i)];
+    auto name = [i] { return wheelbase_name(i); };
+    if (!finite_positive(lambda)) {
+      return fail(name, lambda,
+                  text("must be finite and > 0 (reversing is selected by v < 0, not by the sign)"));
     }
     // Paper Sec. III item 3: lambda^2 = lambda_veh^2 - lambda_l^2 implies lambda_l < lambda_veh.
-    if (i >= 1 && lambda >= vehicle_wheelbase_m) {
-      return describe(wheelbase_name(i), lambda,
-                      "must be < vehicle_wheelbase_m = " + std::to_string(vehicle_wheelbase_m) +
-                          " (eq. cornering_constr: lambda_l < lambda_veh)");
+    if (i >= 1 && lambda >= p.vehicle_wheelbase_m) {
+      return fail(name, lambda, [&p] {
+        return "must be < vehicle_wheelbase_m = " + std::to_string(p.vehicle_wheelbase_m) +
+               " (eq. cornering_constr: lambda_l < lambda_veh)";
+      });
     }
   }
-  if (!std::isfinite(lead_curvature_bound) || lead_curvature_bound <= 0.0) {
-    return describe("lead_curvature_bound", lead_curvature_bound, "must be finite and > 0");
+  if (!finite_positive(p.lead_curvature_bound)) {
+    return fail(text("lead_curvature_bound"), p.lead_curvature_bound,
+                text("must be finite and > 0"));
   }
-  if (!std::isfinite(k_rob) || k_rob < 0.0 || k_rob >= 1.0) {
-    return describe("k_rob", k_rob, "must be in [0, 1) (eq. sigma divides by 1 - k_rob)");
+  if (!std::isfinite(p.k_rob) || p.k_rob < 0.0 || p.k_rob >= 1.0) {
+    return fail(text("k_rob"), p.k_rob, text("must be in [0, 1) (eq. sigma divides by 1 - k_rob)"));
   }
-  if (!std::isfinite(boundary_layer) || boundary_layer < 0.0) {
-    return describe("boundary_layer", boundary_layer, "must be finite and >= 0");
+  if (!std::isfinite(p.boundary_layer) || p.boundary_layer < 0.0) {
+    return fail(text("boundary_layer"), p.boundary_layer, text("must be finite and >= 0"));
   }
-  if (!std::isfinite(approach_angle_rad) || approach_angle_rad <= 0.0 ||
-      approach_angle_rad > std::numbers::pi / 2.0 + 1e-12) {
-    return describe("approach_angle_rad", approach_angle_rad, "must be in (0, pi/2]");
+  if (!finite_positive(p.approach_angle_rad) ||
+      p.approach_angle_rad > std::numbers::pi / 2.0 + 1e-12) {
+    return fail(text("approach_angle_rad"), p.approach_angle_rad, text("must be in (0, pi/2]"));
   }
-  if (!std::isfinite(max_substep_fraction) || max_substep_fraction <= 0.0 ||
-      max_substep_fraction > 1.0) {
-    return describe("max_substep_fraction", max_substep_fraction, "must be in (0, 1]");
+  if (!finite_positive(p.max_substep_fraction) || p.max_substep_fraction > 1.0) {
+    return fail(text("max_substep_fraction"), p.max_substep_fraction, text("must be in (0, 1]"));
   }
-  if (max_substeps < 1 || max_substeps > 10000) {
-    return describe("max_substeps", max_substeps, "must be in [1, 10000]");
+  if (p.max_substeps < 1 || p.max_substeps > 10000) {
+    return fail(text("max_substeps"), p.max_substeps, text("must be in [1, 10000]"));
   }
   // Invariant sets down the chain (paper-notes §2): kbar_i lambda_i < 1 for every wheel.
-  double kbar = lead_curvature_bound;
-  for (int i = order; i >= 1; --i) {
-    const double lambda = wheelbases_m[static_cast<std::size_t>(i - 1)];
-    const double product = kbar * lambda;
+  double kbar = p.lead_curvature_bound;
+  for (int i = p.order; i >= 1; --i) {
+    const double product = kbar * p.wheelbases_m[static_cast<std::size_t>(i - 1)];
     if (product >= 1.0) {
-      return describe("kbar_" + std::to_string(i) + " * lambda_" + std::to_string(i), product,
-                      "must be < 1 (invariant set |delta_" + std::to_string(i) +
-                          "| <= asin(kbar lambda), eq. kappal_constr); reduce "
-                          "lead_curvature_bound or the wheelbases");
+      return fail([i] { return "kbar_" + std::to_string(i) + " * lambda_" + std::to_string(i); },
+                  product, [i] {
+                    return "must be < 1 (invariant set |delta_" + std::to_string(i) +
+                           "| <= asin(kbar lambda), eq. kappal_constr); reduce "
+                           "lead_curvature_bound or the wheelbases";
+                  });
     }
-    kbar /= std::sqrt(1.0 - product * product);
-  }
-  return {};
-}
-
-bool ControllerParameters::is_valid() const noexcept {
-  // Mirrors validation_error() rule by rule (tests/tuning compares both on random inputs).
-  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
-  if (order < 0 || order > max_order || !positive(vehicle_wheelbase_m)) return false;
-  for (int i = 0; i < order; ++i) {
-    const double lambda = wheelbases_m[static_cast<std::size_t>(i)];
-    if (!positive(lambda) || (i >= 1 && lambda >= vehicle_wheelbase_m)) return false;
-  }
-  if (!positive(lead_curvature_bound)) return false;
-  if (!std::isfinite(k_rob) || k_rob < 0.0 || k_rob >= 1.0) return false;
-  if (!std::isfinite(boundary_layer) || boundary_layer < 0.0) return false;
-  if (!positive(approach_angle_rad) || approach_angle_rad > std::numbers::pi / 2.0 + 1e-12) {
-    return false;
-  }
-  if (!positive(max_substep_fraction) || max_substep_fraction > 1.0) return false;
-  if (max_substeps < 1 || max_substeps > 10000) return false;
-  double kbar = lead_curvature_bound;
-  for (int i = order; i >= 1; --i) {
-    const double product = kbar * wheelbases_m[static_cast<std::size_t>(i - 1)];
-    if (product >= 1.0) return false;
     kbar /= std::sqrt(1.0 - product * product);
   }
   return true;
+}
+
+}  // namespace
+
+std::string ControllerParameters::validation_error() const {
+  std::string message;
+  check_rules(*this, [&message](auto field, double value, auto rule) {
+    message = describe(field(), value, rule());
+    return false;
+  });
+  return message;
+}
+
+bool ControllerParameters::is_valid() const noexcept {
+  return check_rules(*this, [](auto&&, double, auto&&) noexcept { return false; });
 }
 
 void ControllerParameters::validate() const {

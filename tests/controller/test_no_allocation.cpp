@@ -37,8 +37,14 @@ TEST(RealTime, UpdateDoesNotAllocate) {
     LeadWheelController controller(parameters, path);
     ControllerOutput output;
     Vec2 position{5.0, 30.0};
+    ControllerParameters retuned = parameters, invalid = parameters;
+    invalid.k_rob = 2.0;
     const long before = allocation_count.load();
     for (int k = 0; k < 5000; ++k) {
+      // retune() (gain schedules) is a real-time call too, valid or not.
+      retuned.lead_curvature_bound = parameters.lead_curvature_bound * (1.0 - 0.5 * (k % 7) / 7.0);
+      controller.retune(retuned);
+      controller.retune(invalid);
       // Includes far-away global searches, warm starts, reversing and invalid input.
       const double speed = k < 4000 ? 10.0 : -3.0;
       controller.update({position, 0.0, speed, 0.0, 0.02}, output);
