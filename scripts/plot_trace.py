@@ -5,6 +5,7 @@ Usage: /usr/bin/python3 scripts/plot_trace.py DIR/trace.csv [OUT.png]
 Needs matplotlib (Debian python3-matplotlib); uses only the csv module for reading.
 """
 import csv
+import math
 import os
 import sys
 import tempfile
@@ -30,6 +31,13 @@ def main():
     out = sys.argv[2] if len(sys.argv) == 3 else os.path.splitext(trace_path)[0] + ".png"
     t = read(trace_path)
     fig, axes = plt.subplots(3, 1, figsize=(9, 11))
+    # Closest path point of the rear axle: p - e n, with n the left normal of the path heading
+    # psi - heading_error (heading_error is relative to the direction of travel; the normal is
+    # the same up to sign, which e carries).
+    path_heading = [psi - he for psi, he in zip(t["psi"], t["heading_error"])]
+    reference_x = [x + e * math.sin(h) for x, e, h in zip(t["x"], t["e"], path_heading)]
+    reference_y = [y - e * math.cos(h) for y, e, h in zip(t["y"], t["e"], path_heading)]
+    axes[0].plot(reference_x, reference_y, "k--", linewidth=1.0, label="reference path (closest points)")
     axes[0].plot(t["x"], t["y"], label="rear axle")
     axes[0].set_aspect("equal", adjustable="datalim")
     axes[0].set_xlabel("x [m]")
@@ -49,6 +57,10 @@ def main():
     handle, temporary = tempfile.mkstemp(suffix=".png", dir=os.path.dirname(os.path.abspath(out)))
     os.close(handle)
     fig.savefig(temporary, dpi=110)
+    # mkstemp creates 0600; give the figure the permissions of any other output file.
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(temporary, 0o666 & ~umask)
     os.replace(temporary, out)
     print(f"wrote {out}")
 

@@ -34,31 +34,8 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 }
 
 const std::vector<std::string>& trace_columns() {
-  static const std::vector<std::string> columns{"t",
-                                                "s",
-                                                "x",
-                                                "y",
-                                                "psi",
-                                                "v",
-                                                "a",
-                                                "path_s",
-                                                "path_kappa",
-                                                "e",
-                                                "heading_error",
-                                                "e_front",
-                                                "e_lead",
-                                                "e_measured",
-                                                "sigma",
-                                                "kappa_lead",
-                                                "delta_cmd",
-                                                "delta_cmd_rate",
-                                                "delta_cmd_acc",
-                                                "delta_actual",
-                                                "delta_actual_rate",
-                                                "delta_actual_acc",
-                                                "side_slip",
-                                                "vy",
-                                                "yaw_rate"};
+  static const std::vector<std::string> columns(trace_column_names().begin(),
+                                                trace_column_names().end());
   return columns;
 }
 
@@ -69,32 +46,7 @@ std::string trace_csv(const SimulationResult& result) {
   for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
   out << '\n';
   for (const TraceSample& s : result.trace) {
-    const double values[] = {s.time_s,
-                             s.distance_m,
-                             s.rear_axle.position.x,
-                             s.rear_axle.position.y,
-                             s.rear_axle.heading_rad,
-                             s.speed_mps,
-                             s.acceleration_mps2,
-                             s.path_arc_length_m,
-                             s.path_curvature,
-                             s.lateral_error_m,
-                             s.heading_error_rad,
-                             s.front_lateral_error_m,
-                             s.lead_lateral_error_m,
-                             s.measured_lateral_error_m,
-                             s.sliding_variable,
-                             s.lead_curvature,
-                             s.steering_command_rad,
-                             s.steering_command_rate_radps,
-                             s.steering_command_acceleration_radps2,
-                             s.steering_actual_rad,
-                             s.steering_actual_rate_radps,
-                             s.steering_actual_acceleration_radps2,
-                             s.side_slip_rad,
-                             s.lateral_velocity_mps,
-                             s.yaw_rate_radps};
-    static_assert(std::size(values) == 25);
+    const auto values = trace_row(s);
     for (std::size_t i = 0; i < std::size(values); ++i) out << (i ? "," : "") << values[i];
     out << '\n';
   }

@@ -25,31 +25,7 @@ bool exceeds(double value, double limit, double tolerance) {
 }
 
 int count_non_finite(const TraceSample& s) {
-  const double values[] = {s.time_s,
-                           s.distance_m,
-                           s.rear_axle.position.x,
-                           s.rear_axle.position.y,
-                           s.rear_axle.heading_rad,
-                           s.speed_mps,
-                           s.acceleration_mps2,
-                           s.path_arc_length_m,
-                           s.path_curvature,
-                           s.lateral_error_m,
-                           s.heading_error_rad,
-                           s.front_lateral_error_m,
-                           s.lead_lateral_error_m,
-                           s.measured_lateral_error_m,
-                           s.sliding_variable,
-                           s.lead_curvature,
-                           s.steering_command_rad,
-                           s.steering_command_rate_radps,
-                           s.steering_command_acceleration_radps2,
-                           s.steering_actual_rad,
-                           s.steering_actual_rate_radps,
-                           s.steering_actual_acceleration_radps2,
-                           s.side_slip_rad,
-                           s.lateral_velocity_mps,
-                           s.yaw_rate_radps};
+  const auto values = trace_row(s);
   int count = 0;
   for (double v : values) count += std::isfinite(v) ? 0 : 1;
   return count;

@@ -20,8 +20,14 @@ void* operator new(std::size_t size) {
   if (void* pointer = std::malloc(size == 0 ? 1 : size)) return pointer;
   throw std::bad_alloc();
 }
+// These replace the global operator delete for the malloc-based operator new above. GCC's
+// -Wmismatched-new-delete cannot see that the two are a matching pair (it fires in the
+// sanitizer build), so it is silenced for these two definitions only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void operator delete(void* pointer) noexcept { std::free(pointer); }
 void operator delete(void* pointer, std::size_t) noexcept { std::free(pointer); }
+#pragma GCC diagnostic pop
 
 namespace smoothsteer {
 namespace {

@@ -5,6 +5,7 @@
 //! integrated with RK4 at a fixed sub-step. Optional seeded Gaussian pose noise on the
 //! measurement and a matched curvature disturbance. Definitions: docs/simulation.md.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -65,6 +66,14 @@ struct TraceSample {
   double lateral_velocity_mps = 0.0;
   double yaw_rate_radps = 0.0;
 };
+
+//! Number of columns of a trace row.
+inline constexpr std::size_t trace_column_count = 25;
+//! Column names of a trace row (docs/cli.md), in the order of trace_row().
+const std::array<const char*, trace_column_count>& trace_column_names() noexcept;
+//! The sample's values in the order of trace_column_names(): one definition for the CSV writer
+//! and the NaN check of the metrics.
+std::array<double, trace_column_count> trace_row(const TraceSample& sample) noexcept;
 
 struct SimulationResult {
   Status status = Status::ok;  //!< first non-ok controller status (the run stops there)
