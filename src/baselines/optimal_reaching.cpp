@@ -2,7 +2,6 @@
 
 #include <IpIpoptApplication.hpp>
 #include <IpSolveStatistics.hpp>
-#include <IpTNLP.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +9,8 @@
 #include <stdexcept>
 
 #include "baseline_common.hpp"
+#include "reaching_nlp.hpp"
+#include "reaching_start.hpp"
 
 namespace smoothsteer {
 
@@ -45,313 +46,10 @@ void ReachingProblem::validate() const {
 
 namespace {
 
-using Ipopt::Index;
-using Ipopt::Number;
-
-//! A dynamically feasible starting trajectory on the N + 1 nodes (e, psi, delta, u per node) and
-//! its length S. x_ext is driven by a saturated cascade feedback: aim at the path with look-ahead
-//! L, turn the heading towards it at 2/L, and steer towards the curvature that needs, within C1
-//! and C2. L is long against lambda and against the steering swing delta-bar / delta-bar', so the
-//! inner loops are faster than the outer one. S is the distance after which the state stays
-//! within 1e-3 of 0.
-struct StartingTrajectory {
-  bool valid = false;
-  double distance_m = 0.0;
-  std::vector<double> e, psi, delta, u;
-};
-
-StartingTrajectory feedback_trajectory(const ReachingProblem& p) {
-  const double swing = p.steering_angle_bound_rad / p.steering_rate_bound_per_m;
-  const double look_ahead = 2.0 * p.wheelbase_m + 2.0 * swing + 1.0;
-  const double max_curvature = 0.8 * std::tan(p.steering_angle_bound_rad) / p.wheelbase_m;
-  const double step = 0.01 * std::min({p.wheelbase_m, swing, look_ahead});
-  auto rates = [&](const std::array<double, 3>& x, double u) {
-    return std::array<double, 3>{std::sin(x[1]), std::tan(x[2]) / p.wheelbase_m, u};
-  };
-  auto control = [&](const std::array<double, 3>& x) {
-    const double heading = -std::atan(x[0] / look_ahead);
-    const double curvature =
-        std::clamp(2.0 * (heading - x[1]) / look_ahead, -max_curvature, max_curvature);
-    const double steering = std::atan(p.wheelbase_m * curvature);
-    return std::clamp(3.0 * (steering - x[2]) / swing, -p.steering_rate_bound_per_m,
-                      p.steering_rate_bound_per_m);
-  };
-  std::vector<std::array<double, 4>> samples;  // e, psi, delta, u every `step` metres
-  std::array<double, 3> x{p.initial_lateral_error_m, p.initial_heading_rad, p.initial_steering_rad};
-  const int max_steps = static_cast<int>(400.0 * look_ahead / step);
-  int last_outside = 0;
-  for (int k = 0; k < max_steps; ++k) {
-    const double u = control(x);
-    samples.push_back({x[0], x[1], x[2], u});
-    if (std::abs(x[0]) > 1e-3 || std::abs(x[1]) > 1e-3 || std::abs(x[2]) > 1e-3) last_outside = k;
-    if (k - last_outside > static_cast<int>(10.0 * look_ahead / step)) break;
-    // RK4 with u held over the step (it is re-evaluated every step).
-    const auto k1 = rates(x, u);
-    std::array<double, 3> y{};
-    for (int c = 0; c < 3; ++c) y[c] = x[c] + 0.5 * step * k1[c];
-    const auto k2 = rates(y, u);
-    for (int c = 0; c < 3; ++c) y[c] = x[c] + 0.5 * step * k2[c];
-    const auto k3 = rates(y, u);
-    for (int c = 0; c < 3; ++c) y[c] = x[c] + step * k3[c];
-    const auto k4 = rates(y, u);
-    for (int c = 0; c < 3; ++c) x[c] += step / 6.0 * (k1[c] + 2.0 * k2[c] + 2.0 * k3[c] + k4[c]);
-    x[2] = std::clamp(x[2], -p.steering_angle_bound_rad, p.steering_angle_bound_rad);
-  }
-  StartingTrajectory start;
-  if (last_outside + 1 >= static_cast<int>(samples.size())) return start;  // did not settle
-  start.valid = true;
-  start.distance_m = std::max(step, (last_outside + 1) * step);
-  const int n = p.intervals;
-  for (int node = 0; node <= n; ++node) {
-    const double position = static_cast<double>(node) / n * (last_outside + 1);
-    const auto low = static_cast<std::size_t>(std::floor(position));
-    const std::size_t high = std::min(low + 1, samples.size() - 1);
-    const double t = position - static_cast<double>(low);
-    auto at = [&](int c) { return (1.0 - t) * samples[low][c] + t * samples[high][c]; };
-    start.e.push_back(at(0));
-    start.psi.push_back(at(1));
-    start.delta.push_back(at(2));
-    start.u.push_back(at(3));
-  }
-  return start;
-}
-
-// Variable layout: x_k = (e, psi, delta) at z[3k..3k+2] for k = 0..N, u_k at z[3(N+1) + k],
-// S at the last index. Constraint rows: 3 trapezoidal defects per interval,
-//   d_k = x_{k+1} - x_k - S/(2N) (f(x_k, u_k) + f(x_{k+1}, u_{k+1})),  f = (sin psi, tan delta /
-//   lambda, u).
-class ReachingNlp final : public Ipopt::TNLP {
- public:
-  ReachingNlp(const ReachingProblem& problem, double guess, ReachingSolution& solution,
-              const StartingTrajectory* start = nullptr)
-      : p_(problem), n_(problem.intervals), guess_(guess), solution_(solution), start_(start) {}
-
-  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_hess,
-                    IndexStyleEnum& style) override {
-    n = variable_count();
-    m = 3 * n_;
-    nnz_jac = 15 * n_;
-    nnz_hess = 5 * (n_ + 1);
-    style = C_STYLE;
-    return true;
-  }
-
-  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index, Number* g_l,
-                       Number* g_u) override {
-    constexpr double free = 1e19;
-    for (Index i = 0; i < n; ++i) {
-      x_l[i] = -free;
-      x_u[i] = free;
-    }
-    for (int k = 0; k <= n_; ++k) {
-      x_l[3 * k + 2] = -p_.steering_angle_bound_rad;
-      x_u[3 * k + 2] = p_.steering_angle_bound_rad;
-      x_l[u_index(k)] = -p_.steering_rate_bound_per_m;
-      x_u[u_index(k)] = p_.steering_rate_bound_per_m;
-    }
-    const double start[3] = {p_.initial_lateral_error_m, p_.initial_heading_rad,
-                             p_.initial_steering_rad};
-    for (int c = 0; c < 3; ++c) x_l[c] = x_u[c] = start[c];
-    const int last = 3 * n_;
-    x_l[last] = -p_.terminal_lateral_tolerance_m;
-    x_u[last] = p_.terminal_lateral_tolerance_m;
-    x_l[last + 1] = -p_.terminal_heading_tolerance_rad;
-    x_u[last + 1] = p_.terminal_heading_tolerance_rad;
-    if (!p_.terminal_steering_free) x_l[last + 2] = x_u[last + 2] = 0.0;
-    x_l[s_index()] = 1e-3;
-    x_u[s_index()] = 1e3;
-    for (Index j = 0; j < 3 * n_; ++j) g_l[j] = g_u[j] = 0.0;
-    return true;
-  }
-
-  bool get_starting_point(Index, bool, Number* x, bool, Number*, Number*, Index, bool,
-                          Number*) override {
-    if (start_ != nullptr && start_->valid) {
-      for (int k = 0; k <= n_; ++k) {
-        const auto node = static_cast<std::size_t>(k);
-        x[3 * k] = start_->e[node];
-        x[3 * k + 1] = start_->psi[node];
-        x[3 * k + 2] = start_->delta[node];
-        x[u_index(k)] = start_->u[node];
-      }
-      x[s_index()] = start_->distance_m;
-      return true;
-    }
-    const double start[3] = {p_.initial_lateral_error_m, p_.initial_heading_rad,
-                             p_.initial_steering_rad};
-    for (int k = 0; k <= n_; ++k) {
-      const double fraction = 1.0 - static_cast<double>(k) / n_;
-      for (int c = 0; c < 3; ++c) x[3 * k + c] = fraction * start[c];
-      x[u_index(k)] = 0.0;
-    }
-    x[s_index()] = guess_;
-    return true;
-  }
-
-  bool eval_f(Index, const Number* x, bool, Number& objective) override {
-    objective = x[s_index()];
-    return true;
-  }
-
-  bool eval_grad_f(Index n, const Number*, bool, Number* gradient) override {
-    std::fill(gradient, gradient + n, 0.0);
-    gradient[s_index()] = 1.0;
-    return true;
-  }
-
-  bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
-    const double half_step = x[s_index()] / (2.0 * n_);
-    for (int k = 0; k < n_; ++k) {
-      const Number* a = x + 3 * k;
-      const Number* b = x + 3 * (k + 1);
-      g[3 * k] = b[0] - a[0] - half_step * (std::sin(a[1]) + std::sin(b[1]));
-      g[3 * k + 1] = b[1] - a[1] - half_step * (std::tan(a[2]) + std::tan(b[2])) / p_.wheelbase_m;
-      g[3 * k + 2] = b[2] - a[2] - half_step * (x[u_index(k)] + x[u_index(k + 1)]);
-    }
-    return true;
-  }
-
-  bool eval_jac_g(Index, const Number* x, bool, Index, Index, Index* rows, Index* columns,
-                  Number* values) override {
-    Index entry = 0;
-    if (values == nullptr) {
-      for (int k = 0; k < n_; ++k) {
-        const Index a = 3 * k, b = 3 * (k + 1);
-        const Index pattern[3][5] = {{a, b, a + 1, b + 1, s_index()},
-                                     {a + 1, b + 1, a + 2, b + 2, s_index()},
-                                     {a + 2, b + 2, u_index(k), u_index(k + 1), s_index()}};
-        for (int c = 0; c < 3; ++c) {
-          for (int j = 0; j < 5; ++j) {
-            rows[entry] = 3 * k + c;
-            columns[entry] = pattern[c][j];
-            ++entry;
-          }
-        }
-      }
-      return true;
-    }
-    const double scale = 1.0 / (2.0 * n_);
-    const double half_step = x[s_index()] * scale;
-    const double lambda = p_.wheelbase_m;
-    for (int k = 0; k < n_; ++k) {
-      const Number* a = x + 3 * k;
-      const Number* b = x + 3 * (k + 1);
-      const double sec_a = 1.0 + std::tan(a[2]) * std::tan(a[2]);
-      const double sec_b = 1.0 + std::tan(b[2]) * std::tan(b[2]);
-      const double rows_values[3][5] = {
-          {-1.0, 1.0, -half_step * std::cos(a[1]), -half_step * std::cos(b[1]),
-           -scale * (std::sin(a[1]) + std::sin(b[1]))},
-          {-1.0, 1.0, -half_step * sec_a / lambda, -half_step * sec_b / lambda,
-           -scale * (std::tan(a[2]) + std::tan(b[2])) / lambda},
-          {-1.0, 1.0, -half_step, -half_step, -scale * (x[u_index(k)] + x[u_index(k + 1)])}};
-      for (int c = 0; c < 3; ++c) {
-        for (int j = 0; j < 5; ++j) values[entry++] = rows_values[c][j];
-      }
-    }
-    return true;
-  }
-
-  //! Exact Hessian of the Lagrangian (the objective S is linear). Per node j, with Lambda_r(j)
-  //! the sum of the multipliers of defect row r of the (one or two) intervals touching node j:
-  //!   d2/dpsi_j^2    =  Lambda_0 S/(2N) sin psi_j        d2/dpsi_j dS   = -Lambda_0 cos psi_j/(2N)
-  //!   d2/ddelta_j^2  = -Lambda_1 S/(2N lambda) 2 tan delta_j sec^2 delta_j
-  //!   d2/ddelta_j dS = -Lambda_1 sec^2 delta_j/(2N lambda)   d2/du_j dS = -Lambda_2/(2N).
-  bool eval_h(Index, const Number* x, bool, Number, Index, const Number* multipliers, bool, Index,
-              Index* rows, Index* columns, Number* values) override {
-    if (values == nullptr) {
-      Index entry = 0;
-      for (int j = 0; j <= n_; ++j) {
-        const Index psi = 3 * j + 1, delta = 3 * j + 2;
-        const Index pairs[5][2] = {{psi, psi}, {delta, delta}, {s_index(), psi},
-                                   {s_index(), delta}, {s_index(), u_index(j)}};
-        for (const auto& pair : pairs) {
-          rows[entry] = pair[0];
-          columns[entry] = pair[1];
-          ++entry;
-        }
-      }
-      return true;
-    }
-    const double scale = 1.0 / (2.0 * n_);
-    const double distance = x[s_index()];
-    const double lambda = p_.wheelbase_m;
-    Index entry = 0;
-    for (int j = 0; j <= n_; ++j) {
-      double sum[3] = {0.0, 0.0, 0.0};
-      for (int c = 0; c < 3; ++c) {
-        if (j >= 1) sum[c] += multipliers[3 * (j - 1) + c];
-        if (j < n_) sum[c] += multipliers[3 * j + c];
-      }
-      const double psi = x[3 * j + 1];
-      const double tangent = std::tan(x[3 * j + 2]);
-      const double secant_squared = 1.0 + tangent * tangent;
-      values[entry++] = sum[0] * distance * scale * std::sin(psi);
-      values[entry++] = -sum[1] * distance * scale / lambda * 2.0 * tangent * secant_squared;
-      values[entry++] = -sum[0] * scale * std::cos(psi);
-      values[entry++] = -sum[1] * scale * secant_squared / lambda;
-      values[entry++] = -sum[2] * scale;
-    }
-    return true;
-  }
-
-  void finalize_solution(Ipopt::SolverReturn status, Index, const Number* x, const Number*,
-                         const Number*, Index, const Number*, const Number*, Number,
-                         const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
-    solution_.converged = status == Ipopt::SUCCESS || status == Ipopt::STOP_AT_ACCEPTABLE_POINT;
-    solution_.distance_m = x[s_index()];
-    const auto count = static_cast<std::size_t>(n_ + 1);
-    solution_.arc_length_m.resize(count);
-    solution_.lateral_error_m.resize(count);
-    solution_.heading_rad.resize(count);
-    solution_.steering_rad.resize(count);
-    solution_.steering_rate_per_m.resize(count);
-    for (int k = 0; k <= n_; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      solution_.arc_length_m[i] = solution_.distance_m * k / n_;
-      solution_.lateral_error_m[i] = x[3 * k];
-      solution_.heading_rad[i] = x[3 * k + 1];
-      solution_.steering_rad[i] = x[3 * k + 2];
-      solution_.steering_rate_per_m[i] = x[u_index(k)];
-    }
-  }
-
- private:
-  Index variable_count() const { return 4 * (n_ + 1) + 1; }
-  Index u_index(int k) const { return 3 * (n_ + 1) + k; }
-  Index s_index() const { return 4 * (n_ + 1); }
-
-  ReachingProblem p_;
-  int n_;
-  double guess_;
-  ReachingSolution& solution_;
-  const StartingTrajectory* start_;
-};
-
-const char* status_text(Ipopt::ApplicationReturnStatus status) {
-  switch (status) {
-    case Ipopt::Solve_Succeeded:
-      return "Solve_Succeeded";
-    case Ipopt::Solved_To_Acceptable_Level:
-      return "Solved_To_Acceptable_Level";
-    case Ipopt::Infeasible_Problem_Detected:
-      return "Infeasible_Problem_Detected";
-    case Ipopt::Maximum_Iterations_Exceeded:
-      return "Maximum_Iterations_Exceeded";
-    case Ipopt::Restoration_Failed:
-      return "Restoration_Failed";
-    default:
-      return "Ipopt_Error";
-  }
-}
-
-}  // namespace
-
-namespace {
-
 ReachingSolution solve_with(const ReachingProblem& problem, double guess,
-                            const StartingTrajectory* start, bool exact_hessian) {
+                            const detail::StartingTrajectory* start, bool exact_hessian) {
   ReachingSolution solution;
-  Ipopt::SmartPtr<Ipopt::TNLP> nlp = new ReachingNlp(problem, guess, solution, start);
+  Ipopt::SmartPtr<Ipopt::TNLP> nlp = detail::make_reaching_nlp(problem, guess, solution, start);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", 0);
   app->Options()->SetStringValue("sb", "yes");
@@ -374,7 +72,7 @@ ReachingSolution solve_with(const ReachingProblem& problem, double guess,
     return solution;
   }
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
-  solution.solver_status = status_text(status);
+  solution.solver_status = detail::status_text(status);
   solution.converged =
       status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
   if (Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app->Statistics();
@@ -389,7 +87,7 @@ ReachingSolution solve_with(const ReachingProblem& problem, double guess,
 //! 400 runs into the iteration limit; exact: ~1 in 100 collapses to S -> 0 on coarse grids);
 //! together they have on every one tested.
 ReachingSolution solve_once(const ReachingProblem& problem, double guess,
-                            const StartingTrajectory* start = nullptr) {
+                            const detail::StartingTrajectory* start = nullptr) {
   if (!problem.exact_hessian) return solve_with(problem, guess, start, false);
   ReachingProblem quick = problem;
   quick.max_iterations = std::min(problem.max_iterations, 600.0);
@@ -429,7 +127,7 @@ ReachingSolution solve_optimal_reaching(const ReachingProblem& problem, double d
     if (best.converged && factor >= 2.0) break;
   }
   if (!best.converged) {
-    const StartingTrajectory start = feedback_trajectory(problem);
+    const detail::StartingTrajectory start = detail::feedback_trajectory(problem);
     if (start.valid) {
       ReachingSolution candidate = solve_once(problem, start.distance_m, &start);
       iterations += candidate.iterations;
