@@ -60,6 +60,10 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
   if (!std::isfinite(p.boundary_layer) || p.boundary_layer < 0.0) {
     return fail(text("boundary_layer"), p.boundary_layer, text("must be finite and >= 0"));
   }
+  if (!std::isfinite(p.actuator_delay_s) || p.actuator_delay_s < 0.0 ||
+      p.actuator_delay_s > ControllerParameters::max_actuator_delay_s) {
+    return fail(text("actuator_delay_s"), p.actuator_delay_s, text("must be in [0, 1] s"));
+  }
   if (!finite_positive(p.approach_angle_rad) ||
       p.approach_angle_rad > std::numbers::pi / 2.0 + 1e-12) {
     return fail(text("approach_angle_rad"), p.approach_angle_rad, text("must be in (0, pi/2]"));

@@ -100,6 +100,8 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
 
 void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   direction_ = 1.0;
+  command_history_count_ = 0;
+  command_history_next_ = 0;
   rear_hint_.reset();
   front_hint_.reset();
   lead_hint_.reset();
@@ -132,6 +134,33 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
   return state;
 }
 
+Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const noexcept {
+  Pose2 pose{input.rear_axle_position, input.heading_rad};
+  const double delay = parameters_.actuator_delay_s;
+  if (delay <= 0.0 || command_history_count_ == 0) return pose;
+  // The steering in effect during the next `delay` seconds is what was commanded during the last
+  // `delay` seconds. Find the oldest such command, then roll the kinematic model forward through
+  // them, oldest first, at the current speed.
+  const KinematicSingleTrack model{parameters_.vehicle_wheelbase_m};
+  std::size_t count = 0;
+  double covered = 0.0;
+  while (count < command_history_count_ && covered < delay) {
+    const std::size_t slot =
+        (command_history_next_ + command_history_size - 1 - count) % command_history_size;
+    covered += command_history_[slot].period_s;
+    ++count;
+  }
+  double overshoot = covered > delay ? covered - delay : 0.0;  // part of the oldest one
+  for (std::size_t k = count; k-- > 0;) {
+    const IssuedCommand& command =
+        command_history_[(command_history_next_ + command_history_size - 1 - k) % command_history_size];
+    const double duration = command.period_s - overshoot;
+    overshoot = 0.0;
+    pose = model.step(pose, command.steering_rad, input.speed_mps, duration);
+  }
+  return pose;
+}
+
 Status LeadWheelController::update(const ControllerInput& input,
                                    ControllerOutput& output) noexcept {
   if (!valid_input(input)) return Status::invalid_input;
@@ -145,7 +174,9 @@ Status LeadWheelController::update(const ControllerInput& input,
     direction_ = sign(input.speed_mps);
     initialise_chain(last_steering_angle_);
   }
-  const double travel_heading = input.heading_rad + (direction_ < 0.0 ? pi : 0.0);
+  // With a known actuator delay the law acts on the pose at which this command will take effect.
+  const Pose2 law_pose = predicted_pose(input);
+  const double travel_heading = law_pose.heading_rad + (direction_ < 0.0 ? pi : 0.0);
 
   // One control period: the switching law is re-evaluated at every RK4 sub-step of the chain.
   // The first sub-step uses the measured pose; later ones the rear-axle pose predicted by the
@@ -161,7 +192,7 @@ Status LeadWheelController::update(const ControllerInput& input,
                        parameters_.max_substeps);
   }
   const double step_length = distance / steps;
-  Vec2 position = input.rear_axle_position;
+  Vec2 position = law_pose.position;
   double heading = travel_heading;
   LeadWheelState first{};
   double applied_curvature = 0.0;
@@ -210,6 +241,9 @@ Status LeadWheelController::update(const ControllerInput& input,
     return Status::numerical_error;
   }
   last_steering_angle_ = steering;
+  command_history_[command_history_next_] = {steering, input.period_s};
+  command_history_next_ = (command_history_next_ + 1) % command_history_size;
+  command_history_count_ = std::min(command_history_count_ + 1, command_history_size);
 
   // Diagnostics of the real axles.
   const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
@@ -223,7 +257,8 @@ Status LeadWheelController::update(const ControllerInput& input,
   output.derivatives_available = derivatives;
   TrackingDiagnostics& diagnostics = output.diagnostics;
   diagnostics.lateral_error_m = rear_projection.lateral_error_m;
-  diagnostics.heading_error_rad = wrap_angle(travel_heading - rear_projection.heading_rad);
+  const double measured_travel_heading = input.heading_rad + (direction_ < 0.0 ? pi : 0.0);
+  diagnostics.heading_error_rad = wrap_angle(measured_travel_heading - rear_projection.heading_rad);
   diagnostics.front_lateral_error_m = front_projection.lateral_error_m;
   diagnostics.lead_lateral_error_m = first.projection.lateral_error_m;
   diagnostics.lead_heading_error_rad = first.relative_heading;

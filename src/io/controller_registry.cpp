@@ -21,6 +21,8 @@ namespace {
 void read_law_options(ConfigSection& c, ControllerParameters& p) {
   p.k_rob = c.number("k_rob", 0.3, {0.0, 1.0, false, true});
   p.boundary_layer = c.number("boundary_layer", 0.0, Range::non_negative());
+  p.actuator_delay_s =
+      c.number("actuator_delay_s", 0.0, {0.0, ControllerParameters::max_actuator_delay_s});
   p.approach_angle_rad = c.number("approach_angle_rad", std::numbers::pi / 2.0,
                                   {0.0, std::numbers::pi / 2.0, true, false});
   const std::string surface = c.text("surface", "global", {"global", "paper"});

@@ -67,6 +67,12 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
   p.k_rob = -0.1;
   expect_rejected(p, "k_rob = -0.1", "[0, 1)");
   p = {};
+  p.actuator_delay_s = -0.1;
+  expect_rejected(p, "actuator_delay_s = -0.1", "[0, 1] s");
+  p = {};
+  p.actuator_delay_s = 2.0;
+  expect_rejected(p, "actuator_delay_s = 2", "[0, 1] s");
+  p = {};
   p.boundary_layer = -0.01;
   expect_rejected(p, "boundary_layer = -0.01", ">= 0");
   p = {};

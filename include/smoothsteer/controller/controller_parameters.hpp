@@ -55,6 +55,13 @@ struct ControllerParameters {
   //! kappa_n = kbar_n sign(.); epsilon > 0 uses kbar_n sat(./epsilon), which removes the
   //! discrete-time chattering of kappa_n. |kappa_n| <= kbar_n either way, so every bound holds.
   double boundary_layer = 0.0;
+  //! Known delay [s] between the command and the steering it produces (dead time, plus the
+  //! group delay of the actuator's low-pass if desired); 0 = off. Beyond the paper (its outlook:
+  //! actuator compensation): the law acts on the pose predicted for the moment the new command
+  //! takes effect, integrated with the kinematic model from the measured pose and the commands
+  //! still in the pipe (a Smith predictor). At most max_actuator_delay_s.
+  double actuator_delay_s = 0.0;
+  static constexpr double max_actuator_delay_s = 1.0;
   SlidingSurface surface = SlidingSurface::global;
   CorneringTarget cornering_target = CorneringTarget::rear_axle;
   //! Largest arc-length step [m] of the RK4 integration of the chain, relative to the shortest

@@ -12,6 +12,7 @@
 //!   actuator.command(out.steering_angle_rad);
 //! \endcode
 
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -20,6 +21,7 @@
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/controller/trailer_chain.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace smoothsteer {
 
@@ -74,6 +76,17 @@ class LeadWheelController final : public SteeringController {
   ChainBounds bounds_;
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
+  //! Commands of the last periods, newest last, for the delay compensation (actuator_delay_s):
+  //! a ring buffer, so that update() does not allocate. 512 periods cover 1 s down to 2 ms.
+  struct IssuedCommand {
+    double steering_rad = 0.0;
+    double period_s = 0.0;
+  };
+  static constexpr std::size_t command_history_size = 512;
+  std::array<IssuedCommand, command_history_size> command_history_{};
+  std::size_t command_history_count_ = 0;  //!< valid entries
+  std::size_t command_history_next_ = 0;   //!< slot of the next command
+  Pose2 predicted_pose(const ControllerInput& input) const noexcept;
   double direction_ = 1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;
