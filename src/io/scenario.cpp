@@ -185,8 +185,15 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
 
   ConfigSection metrics = c.section("metrics");
   s.metrics.reaching_threshold_m = metrics.number("reaching_threshold_m", 0.1, Range::positive());
-  s.metrics.steering_acceleration_limit_radps2 = metrics.number(
-      "steering_acceleration_limit_radps2", std::numeric_limits<double>::max(), Range::positive());
+  // No acceleration limit unless given: +inf internally, null in the resolved parameters (JSON
+  // has no infinity; a huge finite stand-in would read like a real limit).
+  if (metrics.has("steering_acceleration_limit_radps2")) {
+    s.metrics.steering_acceleration_limit_radps2 =
+        metrics.required_number("steering_acceleration_limit_radps2", Range::positive());
+  } else {
+    s.metrics.steering_acceleration_limit_radps2 = std::numeric_limits<double>::infinity();
+    metrics.store("steering_acceleration_limit_radps2", YAML::Node(YAML::NodeType::Null));
+  }
   metrics.finish();
   s.metrics.steering_angle_limit_rad = s.vehicle.max_steering_angle_rad;
   s.metrics.steering_rate_limit_radps = s.vehicle.max_steering_rate_radps;
