@@ -18,13 +18,8 @@ double HosmParameters::alpha() const noexcept {
 
 void HosmParameters::validate() const {
   const char* owner = "HosmParameters";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(
-      detail::positive_finite(steering_angle_bound_rad) && steering_angle_bound_rad < pi / 2.0,
-      owner, "steering_angle_bound_rad", steering_angle_bound_rad, "must be in (0, pi/2)");
-  detail::require(detail::positive_finite(steering_rate_bound_per_m), owner,
-                  "steering_rate_bound_per_m", steering_rate_bound_per_m, "must be finite and > 0");
+  detail::require_x_ext_limits(owner, wheelbase_m, steering_angle_bound_rad,
+                               steering_rate_bound_per_m);
   detail::require(detail::positive_finite(heading_bound_rad) && heading_bound_rad < pi / 2.0, owner,
                   "heading_bound_rad", heading_bound_rad,
                   "must be in (0, pi/2) so that G = cos(psi_bar)/lambda > 0");

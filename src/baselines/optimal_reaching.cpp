@@ -16,13 +16,8 @@ namespace smoothsteer {
 
 void ReachingProblem::validate() const {
   const char* owner = "ReachingProblem";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(
-      detail::positive_finite(steering_angle_bound_rad) && steering_angle_bound_rad < pi / 2.0,
-      owner, "steering_angle_bound_rad", steering_angle_bound_rad, "must be in (0, pi/2)");
-  detail::require(detail::positive_finite(steering_rate_bound_per_m), owner,
-                  "steering_rate_bound_per_m", steering_rate_bound_per_m, "must be finite and > 0");
+  detail::require_x_ext_limits(owner, wheelbase_m, steering_angle_bound_rad,
+                               steering_rate_bound_per_m);
   detail::require(std::isfinite(initial_lateral_error_m), owner, "initial_lateral_error_m",
                   initial_lateral_error_m, "must be finite");
   detail::require(std::isfinite(initial_heading_rad) && std::abs(initial_heading_rad) < pi / 2.0,

@@ -11,16 +11,12 @@
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/worst_case.hpp"
 #include "support/property.hpp"
+#include "support/shared_static_map.hpp"
 
 namespace smoothsteer {
 namespace {
 
 using namespace smoothsteer::testing;
-
-const StaticMap& shared_map() {
-  static const StaticMap map{};
-  return map;
-}
 
 VehicleLimits random_vehicle(Random& random) {
   VehicleLimits v;

@@ -12,16 +12,12 @@
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "support/property.hpp"
+#include "support/shared_static_map.hpp"
 
 namespace smoothsteer {
 namespace {
 
 using namespace smoothsteer::testing;
-
-const StaticMap& shared_map() {
-  static const StaticMap map{};
-  return map;
-}
 
 VehicleLimits example_vehicle() {
   VehicleLimits v;  // CommonRoad vehicle 2 + a steering-acceleration limit

@@ -12,16 +12,12 @@
 #include "smoothsteer/tuning/static_map.hpp"
 #include "smoothsteer/tuning/worst_case.hpp"
 #include "support/property.hpp"
+#include "support/shared_static_map.hpp"
 
 namespace smoothsteer {
 namespace {
 
 using namespace smoothsteer::testing;
-
-const StaticMap& shared_map() {
-  static const StaticMap map{};
-  return map;
-}
 
 TEST(InvariantBounds, CorrectedKappalmaxForSecondOrder) {
   // Paper-notes §2: kbar_l = sin(dbar) / sqrt(lambda^2 + lambda_l^2 sin^2 dbar) with dbar the
