@@ -46,12 +46,13 @@ std::vector<ControllerInput> recorded_inputs(const std::shared_ptr<const Path>& 
   KinematicLoopOptions options;
   options.speed_mps = 10.0;
   options.duration_s = 200.0;
-  const KinematicLoopResult result = run_kinematic_closed_loop(controller, {{0.0, 2.0}, 0.0}, options);
+  const KinematicLoopResult result =
+      run_kinematic_closed_loop(controller, {{0.0, 2.0}, 0.0}, options);
   std::vector<ControllerInput> inputs;
   inputs.reserve(result.trace.size());
   for (const KinematicTraceSample& sample : result.trace) {
-    inputs.push_back({sample.pose.position, sample.pose.heading_rad, options.speed_mps, 0.0,
-                      options.period_s});
+    inputs.push_back(
+        {sample.pose.position, sample.pose.heading_rad, options.speed_mps, 0.0, options.period_s});
   }
   return inputs;
 }
@@ -70,8 +71,12 @@ void update_cost(benchmark::State& state, const std::shared_ptr<const Path>& pat
   state.SetLabel("n=" + std::to_string(order));
 }
 
-void BM_UpdateStraightLine(benchmark::State& state) { update_cost(state, straight_path()); }
-void BM_UpdateCurvedPath10k(benchmark::State& state) { update_cost(state, curved_path()); }
+void BM_UpdateStraightLine(benchmark::State& state) {
+  update_cost(state, straight_path());
+}
+void BM_UpdateCurvedPath10k(benchmark::State& state) {
+  update_cost(state, curved_path());
+}
 
 //! Worst case: 30 m from the 10 000-segment path every projection is a global search.
 void BM_UpdateFarFromCurvedPath10k(benchmark::State& state) {
@@ -86,9 +91,19 @@ void BM_UpdateFarFromCurvedPath10k(benchmark::State& state) {
   state.SetLabel("n=" + std::to_string(order));
 }
 
-BENCHMARK(BM_UpdateStraightLine)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Repetitions(5)
+BENCHMARK(BM_UpdateStraightLine)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Repetitions(5)
     ->ReportAggregatesOnly(true);
-BENCHMARK(BM_UpdateCurvedPath10k)->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Repetitions(5)
+BENCHMARK(BM_UpdateCurvedPath10k)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Repetitions(5)
     ->ReportAggregatesOnly(true);
 BENCHMARK(BM_UpdateFarFromCurvedPath10k)->Arg(2)->Repetitions(3)->ReportAggregatesOnly(true);
 

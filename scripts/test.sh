@@ -2,7 +2,8 @@
 # Builds everything with warnings as errors and runs every test:
 #   1. the full suite (ci preset: Release, -Werror),
 #   2. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer (asan preset),
-#   3. a consumer project built against the installed package (find_package(smoothsteer)).
+#   3. a consumer project built against the installed package (find_package(smoothsteer)),
+#   4. the formatting of every C++ file against .clang-format.
 # SMOOTHSTEER_PROPERTY_CASES sets the number of randomized cases per property (default 40; CI
 # uses more). SMOOTHSTEER_SKIP_ASAN=1 skips step 2.
 set -euo pipefail
@@ -29,3 +30,6 @@ cmake -S cmake/consumer_test -B "$prefix/consumer-build" -DCMAKE_PREFIX_PATH="$p
 cmake --build "$prefix/consumer-build" > /dev/null
 "$prefix/consumer-build/consumer"
 echo "1 passed, 0 failed: installed-package consumer"
+
+git ls-files '*.cpp' '*.hpp' | xargs clang-format --dry-run --Werror
+echo "1 passed, 0 failed: clang-format"

@@ -5,19 +5,23 @@
 namespace smoothsteer {
 
 enum class Status {
-  ok = 0,                   //!< output is valid
-  invalid_input = -1,       //!< NaN/inf pose, speed or period, or a non-positive period
-  not_configured = -2,      //!< the controller has no path
-  numerical_error = -3,     //!< an internal value became non-finite; the state was reset
+  ok = 0,                //!< output is valid
+  invalid_input = -1,    //!< NaN/inf pose, speed or period, or a non-positive period
+  not_configured = -2,   //!< the controller has no path
+  numerical_error = -3,  //!< an internal value became non-finite; the state was reset
 };
 
 //! Human-readable name of a status, for logs.
 constexpr const char* to_string(Status status) noexcept {
   switch (status) {
-    case Status::ok: return "ok";
-    case Status::invalid_input: return "invalid_input";
-    case Status::not_configured: return "not_configured";
-    case Status::numerical_error: return "numerical_error";
+    case Status::ok:
+      return "ok";
+    case Status::invalid_input:
+      return "invalid_input";
+    case Status::not_configured:
+      return "not_configured";
+    case Status::numerical_error:
+      return "numerical_error";
   }
   return "unknown";
 }

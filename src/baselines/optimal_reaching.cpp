@@ -48,7 +48,8 @@ ReachingSolution solve_with(const ReachingProblem& problem, double guess,
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", 0);
   app->Options()->SetStringValue("sb", "yes");
-  app->Options()->SetStringValue("hessian_approximation", exact_hessian ? "exact" : "limited-memory");
+  app->Options()->SetStringValue("hessian_approximation",
+                                 exact_hessian ? "exact" : "limited-memory");
   if (problem.check_derivatives) {
     app->Options()->SetStringValue("derivative_test", "second-order");
     app->Options()->SetIntegerValue("print_level", 4);

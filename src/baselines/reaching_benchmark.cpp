@@ -134,9 +134,17 @@ ReachingBenchmarkResult run_reaching_benchmark(const ReachingBenchmarkOptions& o
 ResultsTable ReachingBenchmarkResult::table() const {
   ResultsTable t;
   t.title = "Tab. roc_vx: travelled distance until the path is reached";
-  t.header = {"psi0_rad",         "optimal_m",        "optimal_relaxed_m", "proposed_m",
-              "hosm_m",           "proposed/optimal_relaxed", "hosm/optimal_relaxed", "paper_optimal_m",
-              "paper_proposed_m", "paper_hosm_m",     "optimal_solve_s"};
+  t.header = {"psi0_rad",
+              "optimal_m",
+              "optimal_relaxed_m",
+              "proposed_m",
+              "hosm_m",
+              "proposed/optimal_relaxed",
+              "hosm/optimal_relaxed",
+              "paper_optimal_m",
+              "paper_proposed_m",
+              "paper_hosm_m",
+              "optimal_solve_s"};
   const double paper[3][3] = {{1.42, 1.69, 1.82}, {1.17, 1.38, 2.14}, {1.91, 2.24, 3.00}};
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const ReachingBenchmarkCase& c = cases[i];

@@ -155,8 +155,11 @@ class ReachingNlp final : public Ipopt::TNLP {
       Index entry = 0;
       for (int j = 0; j <= n_; ++j) {
         const Index psi = 3 * j + 1, delta = 3 * j + 2;
-        const Index pairs[5][2] = {{psi, psi}, {delta, delta}, {s_index(), psi},
-                                   {s_index(), delta}, {s_index(), u_index(j)}};
+        const Index pairs[5][2] = {{psi, psi},
+                                   {delta, delta},
+                                   {s_index(), psi},
+                                   {s_index(), delta},
+                                   {s_index(), u_index(j)}};
         for (const auto& pair : pairs) {
           rows[entry] = pair[0];
           columns[entry] = pair[1];

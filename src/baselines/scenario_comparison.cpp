@@ -79,7 +79,8 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
     for (const std::string& name : comparison_controller_names()) {
       // Every controller gets the limits the simulated actuator enforces, so that all rows are
       // compared under the same C1 and C2.
-      const SteeringLimits limits{scenario.actuator.max_angle_rad, scenario.actuator.max_rate_radps};
+      const SteeringLimits limits{scenario.actuator.max_angle_rad,
+                                  scenario.actuator.max_rate_radps};
       auto controller = make_comparison_controller(
           name, setup_for(scenario.path, scenario.vehicle.wheelbase_m(), speed, limits));
       const io::RunResult run = io::run_scenario(scenario, *controller);
@@ -101,7 +102,8 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
       "(max_angle_rad, max_rate_radps); proposed_c0/c1 are sized so that their worst case fits "
       "them at the scenario speed. angle_hits / rate_hits: updates in which the saturation "
       "clamped the raw command; for the scenario row: metric violations of the vehicle file's "
-      "limits (0.4 rad/s). Paper (Sec. IV-C, proposed, C^1): 0.012 / 0.39 / 0.99 m at 10 / 15 / 19 m/s; "
+      "limits (0.4 rad/s). Paper (Sec. IV-C, proposed, C^1): 0.012 / 0.39 / 0.99 m at 10 / 15 / 19 "
+      "m/s; "
       "Newton-Raphson flow of Shivam et al. with a slip model: 0.07 m at 10 m/s, 0.25 m at 19 "
       "m/s."};
   return table;

@@ -32,8 +32,7 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
                 [] { return "must be in [0, " + std::to_string(max_order) + "]"; });
   }
   if (!finite_positive(p.vehicle_wheelbase_m)) {
-    return fail(text("vehicle_wheelbase_m"), p.vehicle_wheelbase_m,
-                text("must be finite and > 0"));
+    return fail(text("vehicle_wheelbase_m"), p.vehicle_wheelbase_m, text("must be finite and > 0"));
   }
   for (int i = 0; i < p.order; ++i) {
     const double lambda = p.wheelbases_m[static_cast<std::size_t>(i)];
@@ -80,7 +79,8 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
     const double product = kbar * p.wheelbases_m[static_cast<std::size_t>(i - 1)];
     if (product >= 1.0) {
       return fail([i] { return "kbar_" + std::to_string(i) + " * lambda_" + std::to_string(i); },
-                  product, [i] {
+                  product,
+                  [i] {
                     return "must be < 1 (invariant set |delta_" + std::to_string(i) +
                            "| <= asin(kbar lambda), eq. kappal_constr); reduce "
                            "lead_curvature_bound or the wheelbases";

@@ -42,8 +42,8 @@ SwitchingResult dubins_switching_law(double lateral_error, double relative_headi
     result.sliding_variable = wrap_angle(reference - relative_heading);
   }
   if (parameters.boundary_layer > 0.0) {
-    result.curvature =
-        curvature_bound * std::clamp(result.sliding_variable / parameters.boundary_layer, -1.0, 1.0);
+    result.curvature = curvature_bound *
+                       std::clamp(result.sliding_variable / parameters.boundary_layer, -1.0, 1.0);
   } else {
     result.curvature = curvature_bound * sign(result.sliding_variable);  // eq. (cntrllaw)
   }

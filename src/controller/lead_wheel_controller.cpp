@@ -10,12 +10,14 @@
 namespace smoothsteer {
 namespace {
 
-bool finite(double value) noexcept { return std::isfinite(value); }
+bool finite(double value) noexcept {
+  return std::isfinite(value);
+}
 
 bool valid_input(const ControllerInput& input) noexcept {
   return finite(input.rear_axle_position.x) && finite(input.rear_axle_position.y) &&
-         finite(input.heading_rad) && finite(input.speed_mps) &&
-         finite(input.acceleration_mps2) && finite(input.period_s) && input.period_s > 0.0;
+         finite(input.heading_rad) && finite(input.speed_mps) && finite(input.acceleration_mps2) &&
+         finite(input.period_s) && input.period_s > 0.0;
 }
 
 }  // namespace
@@ -88,10 +90,12 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
   // outside a shrunken set returns under the chain's flow (integrate_chain never pushes it out).
   if (n > 0) angles_[0] = front_angle_from_vehicle(steering);
   if (n >= 2) {
-    // delta_1' = tan(delta_2) / (lambda_2 cos delta_1) - tan(delta_1) / lambda_1, solved for delta_2.
+    // delta_1' = tan(delta_2) / (lambda_2 cos delta_1) - tan(delta_1) / lambda_1, solved for
+    // delta_2.
     const double* wheelbases = parameters_.wheelbases_m.data();
     const double front_rate =
-        rate_per_meter / vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / wheelbases[0]);
+        rate_per_meter /
+        vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / wheelbases[0]);
     angles_[1] = std::atan(wheelbases[1] * std::cos(angles_[0]) *
                            (front_rate + std::tan(angles_[0]) / wheelbases[0]));
   }
@@ -128,9 +132,9 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
   if (parameters_.cornering_target == CorneringTarget::rear_axle) {
     target_offset = rear_axle_cornering_offset(state.projection.curvature, chain_length_squared_);
   }
-  state.law = dubins_switching_law(state.projection.lateral_error_m - target_offset,
-                                   state.relative_heading, parameters_.lead_curvature_bound,
-                                   parameters_);
+  state.law =
+      dubins_switching_law(state.projection.lateral_error_m - target_offset, state.relative_heading,
+                           parameters_.lead_curvature_bound, parameters_);
   return state;
 }
 
@@ -153,7 +157,8 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
   double overshoot = covered > delay ? covered - delay : 0.0;  // part of the oldest one
   for (std::size_t k = count; k-- > 0;) {
     const IssuedCommand& command =
-        command_history_[(command_history_next_ + command_history_size - 1 - k) % command_history_size];
+        command_history_[(command_history_next_ + command_history_size - 1 - k) %
+                         command_history_size];
     const double duration = command.period_s - overshoot;
     overshoot = 0.0;
     pose = model.step(pose, command.steering_rad, input.speed_mps, duration);
@@ -204,8 +209,7 @@ Status LeadWheelController::update(const ControllerInput& input,
     const double front_before = angles_[0];
     integrate_chain(angles_, wheelbases, n, applied_curvature, step_length, bounds_.angle);
     // Rear-axle prediction along an arc of the mean chain curvature over the sub-step.
-    const double curvature =
-        0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0];
+    const double curvature = 0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0];
     const double half_turn = 0.5 * curvature * step_length;
     position = position + step_length * unit_from_heading(heading + half_turn);
     heading += 2.0 * half_turn;
@@ -222,8 +226,10 @@ Status LeadWheelController::update(const ControllerInput& input,
     const double front = angles_[0];
     const double gain = vehicle_angle_gain(front, ratio);  // d delta_veh / d delta_1
     // d gain / d delta_1 = -gain^2 sin(2 delta_1) (r^2 - 1) / r
-    const double curvature_of_gain = -gain * gain * std::sin(2.0 * front) * (ratio * ratio - 1.0) / ratio;
-    const FrontAngleDerivatives d = front_angle_derivatives(angles_, wheelbases, n, applied_curvature);
+    const double curvature_of_gain =
+        -gain * gain * std::sin(2.0 * front) * (ratio * ratio - 1.0) / ratio;
+    const FrontAngleDerivatives d =
+        front_angle_derivatives(angles_, wheelbases, n, applied_curvature);
     const double speed = std::abs(input.speed_mps);
     const double front_rate = speed * d.first;
     const double front_acceleration =

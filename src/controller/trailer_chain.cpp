@@ -30,7 +30,7 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
     const double kbar = bounds.curvature[index];
     const double lambda = parameters.wheelbases_m[index - 1];
     const double product = kbar * lambda;
-    bounds.angle[index - 1] = std::asin(product);                            // eq. (kappaf_constr)
+    bounds.angle[index - 1] = std::asin(product);                             // eq. (kappaf_constr)
     bounds.curvature[index - 1] = kbar / std::sqrt(1.0 - product * product);  // paper-notes §2
   }
   bounds.steering_angle_rad = std::atan(parameters.vehicle_wheelbase_m * bounds.curvature[0]);
@@ -154,8 +154,8 @@ void tangent_rates(const ChainAngles& tangent, const double* wheelbases, int ord
 
 }  // namespace
 
-void integrate_chain(ChainAngles& delta, const double* wheelbases, int order,
-                     double lead_curvature, double ds, const ChainAngles& angle_bound) noexcept {
+void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
+                     double ds, const ChainAngles& angle_bound) noexcept {
   ChainAngles t{}, k1{}, k2{}, k3{}, k4{}, probe{};
   const auto n = static_cast<std::size_t>(order);
   for (std::size_t i = 0; i < n; ++i) t[i] = std::tan(delta[i]);

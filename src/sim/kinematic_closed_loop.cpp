@@ -49,8 +49,8 @@ KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, co
     result.final_heading_error_rad = output.diagnostics.heading_error_rad;
     // Zero-order hold over the period; the disturbance bends the rear-axle path as an extra
     // curvature: tan(delta_eff) / lambda = tan(delta) / lambda + kappa_d.
-    const double disturbed = std::atan(std::tan(steering) +
-                                       options.wheelbase_m * options.curvature_disturbance);
+    const double disturbed =
+        std::atan(std::tan(steering) + options.wheelbase_m * options.curvature_disturbance);
     pose = plant.step(pose, disturbed, options.speed_mps, options.period_s);
     distance += std::abs(options.speed_mps) * options.period_s;
   }
@@ -71,9 +71,9 @@ void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::str
            << sample.pose.position.y << ',' << sample.pose.heading_rad << ','
            << sample.output.steering_angle_rad << ',' << sample.output.steering_rate_radps << ','
            << sample.output.steering_acceleration_radps2 << ',' << d.lateral_error_m << ','
-           << d.heading_error_rad << ',' << d.front_lateral_error_m << ','
-           << d.lead_lateral_error_m << ',' << d.lead_heading_error_rad << ','
-           << d.sliding_variable << ',' << d.lead_curvature << ',' << d.path_arc_length_m << '\n';
+           << d.heading_error_rad << ',' << d.front_lateral_error_m << ',' << d.lead_lateral_error_m
+           << ',' << d.lead_heading_error_rad << ',' << d.sliding_variable << ','
+           << d.lead_curvature << ',' << d.path_arc_length_m << '\n';
     }
     if (!file) throw std::runtime_error("failed while writing '" + temporary + "'");
   }

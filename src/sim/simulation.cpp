@@ -226,14 +226,31 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
 }
 
 const std::array<const char*, trace_column_count>& trace_column_names() noexcept {
-  static constexpr std::array<const char*, trace_column_count> names{
-      "t",          "s",           "x",           "y",
-      "psi",        "v",           "a",           "path_s",
-      "path_kappa", "e",           "heading_error", "e_front",
-      "e_lead",     "e_measured",  "sigma",       "kappa_lead",
-      "delta_cmd",  "delta_cmd_rate", "delta_cmd_acc", "delta_actual",
-      "delta_actual_rate", "delta_actual_acc", "side_slip", "vy",
-      "yaw_rate"};
+  static constexpr std::array<const char*, trace_column_count> names{"t",
+                                                                     "s",
+                                                                     "x",
+                                                                     "y",
+                                                                     "psi",
+                                                                     "v",
+                                                                     "a",
+                                                                     "path_s",
+                                                                     "path_kappa",
+                                                                     "e",
+                                                                     "heading_error",
+                                                                     "e_front",
+                                                                     "e_lead",
+                                                                     "e_measured",
+                                                                     "sigma",
+                                                                     "kappa_lead",
+                                                                     "delta_cmd",
+                                                                     "delta_cmd_rate",
+                                                                     "delta_cmd_acc",
+                                                                     "delta_actual",
+                                                                     "delta_actual_rate",
+                                                                     "delta_actual_acc",
+                                                                     "side_slip",
+                                                                     "vy",
+                                                                     "yaw_rate"};
   return names;
 }
 

@@ -52,9 +52,9 @@ TEST(ChainMatchesPaper, FirstOrderEqualsExt1) {
     const double psi_f = wrap_angle(geometry.heading[1] - front.heading_rad);
     const double sigma_chain = paper_sliding_variable(front.lateral_error_m, psi_f, kbar, k_rob);
     // eq. (sigmaf) prints sign(psi + delta); for |psi + delta| < pi it equals sign(sin(.)).
-    const double sigma_paper = -e - std::sin(psi) * lambda -
-                               (1.0 - std::cos(psi + delta)) / ((1.0 - k_rob) * kbar) *
-                                   sign(psi + delta);
+    const double sigma_paper =
+        -e - std::sin(psi) * lambda -
+        (1.0 - std::cos(psi + delta)) / ((1.0 - k_rob) * kbar) * sign(psi + delta);
     EXPECT_NEAR(sigma_chain, sigma_paper, 1e-9);
   }
 }
@@ -92,18 +92,17 @@ TEST(ChainMatchesPaper, SecondOrderEqualsControlLaw) {
     const double psi_l = wrap_angle(geometry.heading[2] - lead.heading_rad);
     const double sigma_chain = paper_sliding_variable(lead.lateral_error_m, psi_l, kbar_l, k_rob);
     // eq. (control_law), sigma
-    const double sigma_paper =
-        -(e + std::sin(psi) * lambda + std::sin(psi + delta) * lambda_l) -
-        (1.0 - std::cos(psi + delta + delta_l)) / ((1.0 - k_rob) * kbar_l) *
-            sign(std::sin(psi + delta + delta_l));
+    const double sigma_paper = -(e + std::sin(psi) * lambda + std::sin(psi + delta) * lambda_l) -
+                               (1.0 - std::cos(psi + delta + delta_l)) / ((1.0 - k_rob) * kbar_l) *
+                                   sign(std::sin(psi + delta + delta_l));
     EXPECT_NEAR(sigma_chain, sigma_paper, 1e-9);
     const double kappa_l = kbar_l * sign(sigma_paper);
 
     const FrontAngleDerivatives chain = front_angle_derivatives(angles, wheelbases, 2, kappa_l);
     EXPECT_NEAR(chain.first, ddelta, 1e-9);
     // eq. (control_law): delta_l' and delta''
-    const double ddelta_l = kappa_l / (std::cos(delta) * std::cos(delta_l)) -
-                            std::tan(delta) / lambda - ddelta;
+    const double ddelta_l =
+        kappa_l / (std::cos(delta) * std::cos(delta_l)) - std::tan(delta) / lambda - ddelta;
     const double dddelta_control_law =
         ddelta_l / (std::cos(delta_l) * std::cos(delta_l) * std::cos(delta) * lambda_l) -
         ddelta / lambda + ddelta * ddelta * std::tan(delta);
@@ -134,7 +133,8 @@ TEST(ChainMatchesPaper, SecondDerivativeMatchesFiniteDifferenceForLongerChains) 
     const int n = random.integer(2, 6);
     ControllerParameters parameters;
     parameters.order = n;
-    for (int i = 0; i < n; ++i) parameters.wheelbases_m[static_cast<std::size_t>(i)] = random.uniform(0.3, 2.0);
+    for (int i = 0; i < n; ++i)
+      parameters.wheelbases_m[static_cast<std::size_t>(i)] = random.uniform(0.3, 2.0);
     parameters.lead_curvature_bound = 0.02;
     const ChainBounds bounds = compute_chain_bounds(parameters);
     ChainAngles angles{};
@@ -169,7 +169,8 @@ TEST(ChainBounds, RateBoundEqualsBruteForce) {
           random.uniform(i == 0 ? 0.3 : 0.1, 0.95) * parameters.vehicle_wheelbase_m;
     }
     parameters.lead_curvature_bound =
-        random.uniform(0.05, 0.9) / parameters.wheelbases_m[static_cast<std::size_t>(parameters.order - 1)];
+        random.uniform(0.05, 0.9) /
+        parameters.wheelbases_m[static_cast<std::size_t>(parameters.order - 1)];
     if (!parameters.is_valid()) continue;
     SCOPED_TRACE(seed_message(seed));
     const ChainBounds bounds = compute_chain_bounds(parameters);
@@ -198,7 +199,8 @@ TEST(ChainMatchesPaper, KappaLMaxNeedsTheSquareRoot) {
     parameters.vehicle_wheelbase_m = random.uniform(2.0, 4.0);
     parameters.wheelbases_m[1] = random.uniform(0.2, 0.9) * parameters.vehicle_wheelbase_m;
     const double lambda_l = parameters.wheelbases_m[1];
-    parameters.wheelbases_m[0] = std::sqrt(parameters.vehicle_wheelbase_m * parameters.vehicle_wheelbase_m - lambda_l * lambda_l);
+    parameters.wheelbases_m[0] = std::sqrt(
+        parameters.vehicle_wheelbase_m * parameters.vehicle_wheelbase_m - lambda_l * lambda_l);
     const double lambda = parameters.wheelbases_m[0];
     const double dbar = random.uniform(0.1, 1.0);
     const double s = std::sin(dbar);

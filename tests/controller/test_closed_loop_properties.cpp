@@ -34,9 +34,11 @@ LoopCase random_case(std::uint64_t seed, double speed_sign) {
   c.parameters = random_parameters(random, order, random.uniform(0.35, 0.6));
   c.kind = static_cast<PathKind>(random.integer(0, 2));
   // Path curvature is a matched disturbance on the lead wheel: keep it inside k_rob kbar_n.
-  c.path = random_path(random, c.kind, 0.5 * c.parameters.k_rob * c.parameters.lead_curvature_bound);
+  c.path =
+      random_path(random, c.kind, 0.5 * c.parameters.k_rob * c.parameters.lead_curvature_bound);
   const PathPoint anchor = c.path->evaluate(random.uniform(0.0, 0.3) * c.path->length());
-  c.start.position = anchor.position + Vec2{random.uniform(-100.0, 100.0), random.uniform(-100.0, 100.0)};
+  c.start.position =
+      anchor.position + Vec2{random.uniform(-100.0, 100.0), random.uniform(-100.0, 100.0)};
   c.start.heading_rad = random.uniform(-pi, pi);
   c.speed = speed_sign * random.uniform(1.0, 15.0);
   std::ostringstream text;
@@ -134,7 +136,8 @@ TEST(ClosedLoopProperties, DelayCompensationRestoresConvergenceUnderDeadTime) {
     const KinematicSingleTrack plant{parameters.vehicle_wheelbase_m};
     std::vector<double> pipe(static_cast<std::size_t>(delay_steps), 0.0);  // FIFO of commands
     std::size_t head = 0;
-    const int steps = static_cast<int>((300.0 + 20.0 / parameters.lead_curvature_bound) / speed / period);
+    const int steps =
+        static_cast<int>((300.0 + 20.0 / parameters.lead_curvature_bound) / speed / period);
     double tail_error = 0.0, max_steering = 0.0;
     ControllerOutput output;
     for (int step = 0; step < steps; ++step) {

@@ -25,8 +25,12 @@ void* operator new(std::size_t size) {
 // sanitizer build), so it is silenced for these two definitions only.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void operator delete(void* pointer) noexcept { std::free(pointer); }
-void operator delete(void* pointer, std::size_t) noexcept { std::free(pointer); }
+void operator delete(void* pointer) noexcept {
+  std::free(pointer);
+}
+void operator delete(void* pointer, std::size_t) noexcept {
+  std::free(pointer);
+}
 #pragma GCC diagnostic pop
 
 namespace smoothsteer {

@@ -33,7 +33,9 @@ void expect_rejected(const ControllerParameters& parameters, const std::string& 
   }
 }
 
-TEST(ParameterValidation, DefaultsAreValid) { EXPECT_NO_THROW(ControllerParameters{}.validate()); }
+TEST(ParameterValidation, DefaultsAreValid) {
+  EXPECT_NO_THROW(ControllerParameters{}.validate());
+}
 
 TEST(ParameterValidation, RejectsEachInvalidField) {
   ControllerParameters p;

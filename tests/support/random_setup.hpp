@@ -44,8 +44,8 @@ inline ControllerParameters random_parameters(Random& random, int order, double 
 
 inline std::string describe(const ControllerParameters& p) {
   std::ostringstream text;
-  text << "n=" << p.order << " lambda_veh=" << p.vehicle_wheelbase_m << " kbar_n="
-       << p.lead_curvature_bound << " k_rob=" << p.k_rob << " wheelbases=[";
+  text << "n=" << p.order << " lambda_veh=" << p.vehicle_wheelbase_m
+       << " kbar_n=" << p.lead_curvature_bound << " k_rob=" << p.k_rob << " wheelbases=[";
   for (int i = 0; i < p.order; ++i) text << p.wheelbases_m[static_cast<std::size_t>(i)] << ' ';
   text << ']';
   return text.str();
@@ -55,9 +55,12 @@ enum class PathKind { line, circle, waypoints };
 
 inline const char* to_string(PathKind kind) {
   switch (kind) {
-    case PathKind::line: return "line";
-    case PathKind::circle: return "circle";
-    case PathKind::waypoints: return "waypoints";
+    case PathKind::line:
+      return "line";
+    case PathKind::circle:
+      return "circle";
+    case PathKind::waypoints:
+      return "waypoints";
   }
   return "?";
 }
@@ -71,9 +74,9 @@ inline std::shared_ptr<const Path> random_path(Random& random, PathKind kind,
           Path::straight_line({random.uniform(-20.0, 20.0), random.uniform(-20.0, 20.0)},
                               random.uniform(-pi, pi), random.uniform(50.0, 200.0)));
     case PathKind::circle:
-      return std::make_shared<const Path>(Path::circle(
-          {0.0, 0.0}, random.uniform(1.2, 3.0) / max_curvature, random.coin(),
-          random.uniform(-pi, pi)));
+      return std::make_shared<const Path>(Path::circle({0.0, 0.0},
+                                                       random.uniform(1.2, 3.0) / max_curvature,
+                                                       random.coin(), random.uniform(-pi, pi)));
     case PathKind::waypoints: {
       for (double scale = 1.0;; scale *= 0.7) {
         std::vector<Vec2> points;

@@ -125,8 +125,9 @@ TEST(Retune, KeepsTheSteeringRateForTheC1Controller) {
     const double theta = random.uniform(0.2, 0.8);
     const ControllerParameters a = ControllerParameters::paper_c1(
         vehicle, random.uniform(0.1, 0.9) * vehicle, std::sin(theta) / vehicle, 0.3);
-    const ControllerParameters b = ControllerParameters::paper_c1(
-        vehicle, random.uniform(0.1, 0.9) * vehicle, std::sin(theta * random.uniform(0.9, 1.1)) / vehicle, 0.3);
+    const ControllerParameters b =
+        ControllerParameters::paper_c1(vehicle, random.uniform(0.1, 0.9) * vehicle,
+                                       std::sin(theta * random.uniform(0.9, 1.1)) / vehicle, 0.3);
     SCOPED_TRACE(seed_message(case_seed(k) + 34));
     LeadWheelController controller(a, path);
     ControllerOutput out;

@@ -8,9 +8,10 @@
 //!   x(0) given,  x(S) = 0  (e = psi = delta = 0: with u = 0 afterwards the car stays on the path).
 //! Direct transcription: trapezoidal collocation on N intervals of length S/N with S a decision
 //! variable, solved by Ipopt with the exact, hand-derived constraint Jacobian and Hessian of the
-//! Lagrangian (Ipopt's derivative checker finds no error in either). The terminal set can be relaxed to |e| <= tol_e, |psi| <= tol_psi and
-//! delta free: the optimum of that problem is a lower bound on the travel of ANY controller that
-//! satisfies C1/C2 and enters that set (used by the tests against the controllers).
+//! Lagrangian (Ipopt's derivative checker finds no error in either). The terminal set can be
+//! relaxed to |e| <= tol_e, |psi| <= tol_psi and delta free: the optimum of that problem is a lower
+//! bound on the travel of ANY controller that satisfies C1/C2 and enters that set (used by the
+//! tests against the controllers).
 
 #include <string>
 #include <vector>

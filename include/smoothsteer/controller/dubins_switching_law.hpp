@@ -25,11 +25,13 @@ double global_reference_heading(double lateral_error, double curvature_bound, do
 
 //! kappa for a Dubins car at lateral error e and heading psi relative to the path.
 SwitchingResult dubins_switching_law(double lateral_error, double relative_heading,
-                                     double curvature_bound, const ControllerParameters& parameters) noexcept;
+                                     double curvature_bound,
+                                     const ControllerParameters& parameters) noexcept;
 
 //! Lateral offset of the lead wheel from the path at which the rear axle lies on the path in
-//! stationary cornering on curvature kappa: the chain's radii satisfy R_n^2 = R_0^2 + sum lambda_i^2,
-//! so e_lead = -(sqrt(1 + kappa^2 L^2) - 1) / kappa with L^2 = sum lambda_i^2 (outside the turn).
+//! stationary cornering on curvature kappa: the chain's radii satisfy R_n^2 = R_0^2 + sum
+//! lambda_i^2, so e_lead = -(sqrt(1 + kappa^2 L^2) - 1) / kappa with L^2 = sum lambda_i^2 (outside
+//! the turn).
 double rear_axle_cornering_offset(double path_curvature, double chain_length_squared) noexcept;
 
 }  // namespace smoothsteer

@@ -9,32 +9,32 @@
 namespace smoothsteer {
 
 struct ControllerInput {
-  Vec2 rear_axle_position;        //!< rear-axle reference point in the world frame [m]
-  double heading_rad = 0.0;       //!< vehicle heading psi [rad]
-  double speed_mps = 0.0;         //!< signed longitudinal speed v [m/s]; v < 0 reverses
-  double acceleration_mps2 = 0.0; //!< dv/dt [m/s^2]; enters d2(delta)/dt2 only
-  double period_s = 0.02;         //!< control period dt [s]
+  Vec2 rear_axle_position;         //!< rear-axle reference point in the world frame [m]
+  double heading_rad = 0.0;        //!< vehicle heading psi [rad]
+  double speed_mps = 0.0;          //!< signed longitudinal speed v [m/s]; v < 0 reverses
+  double acceleration_mps2 = 0.0;  //!< dv/dt [m/s^2]; enters d2(delta)/dt2 only
+  double period_s = 0.02;          //!< control period dt [s]
 };
 
 //! Diagnostics of the path-tracking state (all relative to the reference path).
 struct TrackingDiagnostics {
-  double lateral_error_m = 0.0;        //!< e of the rear axle, left positive
-  double heading_error_rad = 0.0;      //!< psi - path heading at the rear axle's closest point
-  double front_lateral_error_m = 0.0;  //!< e of the real front axle (lambda_veh ahead)
-  double lead_lateral_error_m = 0.0;   //!< e_lead of the controlled (lead) wheel
-  double lead_heading_error_rad = 0.0; //!< psi_lead relative to the path at its closest point
-  double sliding_variable = 0.0;       //!< sigma [m] (paper surface) or heading gap [rad] (global)
-  double lead_curvature = 0.0;         //!< kappa_n applied to the lead wheel [1/m]
-  double path_arc_length_m = 0.0;      //!< s of the rear axle's closest point
-  double path_curvature = 0.0;         //!< path curvature at the rear axle's closest point
+  double lateral_error_m = 0.0;         //!< e of the rear axle, left positive
+  double heading_error_rad = 0.0;       //!< psi - path heading at the rear axle's closest point
+  double front_lateral_error_m = 0.0;   //!< e of the real front axle (lambda_veh ahead)
+  double lead_lateral_error_m = 0.0;    //!< e_lead of the controlled (lead) wheel
+  double lead_heading_error_rad = 0.0;  //!< psi_lead relative to the path at its closest point
+  double sliding_variable = 0.0;        //!< sigma [m] (paper surface) or heading gap [rad] (global)
+  double lead_curvature = 0.0;          //!< kappa_n applied to the lead wheel [1/m]
+  double path_arc_length_m = 0.0;       //!< s of the rear axle's closest point
+  double path_curvature = 0.0;          //!< path curvature at the rear axle's closest point
   double fictive_steering_angle_rad = 0.0;  //!< delta_1 of the fictive chain
 };
 
 struct ControllerOutput {
-  double steering_angle_rad = 0.0;          //!< delta_veh command for the real vehicle
-  double steering_rate_radps = 0.0;         //!< d(delta_veh)/dt, valid if derivatives >= 1
-  double steering_acceleration_radps2 = 0.0;//!< d2(delta_veh)/dt2, valid if derivatives >= 2
-  int derivatives_available = 0;            //!< how many time derivatives are meaningful
+  double steering_angle_rad = 0.0;            //!< delta_veh command for the real vehicle
+  double steering_rate_radps = 0.0;           //!< d(delta_veh)/dt, valid if derivatives >= 1
+  double steering_acceleration_radps2 = 0.0;  //!< d2(delta_veh)/dt2, valid if derivatives >= 2
+  int derivatives_available = 0;              //!< how many time derivatives are meaningful
   TrackingDiagnostics diagnostics;
 };
 

@@ -7,7 +7,8 @@
 //! lead wheel. With s the rear-axle arc length and s_i the arc length of wheel i:
 //!   curvature of wheel i-1:  kappa_{i-1} = tan(delta_i) / lambda_i
 //!   arc length:              ds_i = ds_{i-1} / cos(delta_i)
-//!   dynamics:                d delta_i / d s_{i-1} = kappa_i / cos(delta_i) - tan(delta_i)/lambda_i
+//!   dynamics:                d delta_i / d s_{i-1} = kappa_i / cos(delta_i) -
+//!   tan(delta_i)/lambda_i
 //! with kappa_n the control. All functions take arrays of length n (index 0 = wheel 1).
 
 #include <array>
@@ -56,7 +57,7 @@ FrontAngleDerivatives front_angle_derivatives(const ChainAngles& delta, const do
 
 //! Pose of every wheel of the chain, from the rear-axle pose.
 struct ChainGeometry {
-  std::array<Vec2, ControllerParameters::max_order + 1> position{};  //!< index 0 = rear axle
+  std::array<Vec2, ControllerParameters::max_order + 1> position{};   //!< index 0 = rear axle
   std::array<double, ControllerParameters::max_order + 1> heading{};  //!< psi_i
 };
 void chain_geometry(Vec2 rear_position, double rear_heading, const ChainAngles& delta,
@@ -74,7 +75,7 @@ void stationary_chain(double front_angle, const double* wheelbases, int order,
 //! this only removes the integration error at the boundary; and an angle that a retune left
 //! outside a shrunken set is never moved inward by a jump, only by the flow, which points inward
 //! there (LeadWheelController::retune).
-void integrate_chain(ChainAngles& delta, const double* wheelbases, int order,
-                     double lead_curvature, double ds, const ChainAngles& angle_bound) noexcept;
+void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
+                     double ds, const ChainAngles& angle_bound) noexcept;
 
 }  // namespace smoothsteer

@@ -17,9 +17,13 @@ inline double wrap_angle(double angle) noexcept {
 }
 
 //! sign(x) with sign(0) = 0, as in the paper's sign().
-inline constexpr double sign(double x) noexcept { return (x > 0.0) - (x < 0.0); }
+inline constexpr double sign(double x) noexcept {
+  return (x > 0.0) - (x < 0.0);
+}
 
 //! sign(x) with sign(0) = +1, for choices that must pick a side.
-inline constexpr double sign_nonzero(double x) noexcept { return x < 0.0 ? -1.0 : 1.0; }
+inline constexpr double sign_nonzero(double x) noexcept {
+  return x < 0.0 ? -1.0 : 1.0;
+}
 
 }  // namespace smoothsteer

@@ -30,12 +30,12 @@ struct PathPoint {
 
 //! Result of a closest-point projection.
 struct PathProjection {
-  double arc_length_m = 0.0;     //!< s of the closest point (outside [0, L] on end extensions)
-  double lateral_error_m = 0.0;  //!< signed distance, left positive
-  double heading_rad = 0.0;      //!< path tangent at the closest point
-  double curvature = 0.0;        //!< path curvature at the closest point [1/m]
-  Vec2 closest_point;            //!< [m]
-  std::size_t segment_index = 0; //!< segment that holds the closest point
+  double arc_length_m = 0.0;      //!< s of the closest point (outside [0, L] on end extensions)
+  double lateral_error_m = 0.0;   //!< signed distance, left positive
+  double heading_rad = 0.0;       //!< path tangent at the closest point
+  double curvature = 0.0;         //!< path curvature at the closest point [1/m]
+  Vec2 closest_point;             //!< [m]
+  std::size_t segment_index = 0;  //!< segment that holds the closest point
 };
 
 //! Warm-start memory of one projecting point (e.g. the lead wheel). Owned by the caller so that

@@ -13,10 +13,10 @@
 namespace smoothsteer {
 
 struct KinematicLoopOptions {
-  double wheelbase_m = 2.7;      //!< lambda_veh of the plant [m]
-  double speed_mps = 5.0;        //!< signed constant speed [m/s]
-  double period_s = 0.02;        //!< control period [s]
-  double duration_s = 60.0;      //!< simulated time [s]
+  double wheelbase_m = 2.7;  //!< lambda_veh of the plant [m]
+  double speed_mps = 5.0;    //!< signed constant speed [m/s]
+  double period_s = 0.02;    //!< control period [s]
+  double duration_s = 60.0;  //!< simulated time [s]
   //! Matched curvature disturbance added to the rear-axle curvature [1/m] (paper eq. sigma:
   //! robustness for |kappa_d| <= k_rob kbar).
   double curvature_disturbance = 0.0;
@@ -36,8 +36,8 @@ struct KinematicLoopResult {
   double final_lateral_error_m = 0.0;
   double final_heading_error_rad = 0.0;
   double max_abs_steering_rad = 0.0;
-  double max_abs_steering_rate_radps = 0.0;          //!< from the controller's derivative output
-  double max_abs_steering_difference_rate_radps = 0.0; //!< |delta_k - delta_{k-1}| / dt
+  double max_abs_steering_rate_radps = 0.0;             //!< from the controller's derivative output
+  double max_abs_steering_difference_rate_radps = 0.0;  //!< |delta_k - delta_{k-1}| / dt
   double max_abs_steering_acceleration_radps2 = 0.0;
   bool any_non_finite = false;
 };
