@@ -29,7 +29,7 @@ cmake --install build/ci --prefix "$prefix" > /dev/null
 cmake -S cmake/consumer_test -B "$prefix/consumer-build" -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
 cmake --build "$prefix/consumer-build" > /dev/null
 "$prefix/consumer-build/consumer"
-echo "1 passed, 0 failed: installed-package consumer"
+echo "consumer: 1 passed, 0 failed"
 
 git ls-files '*.cpp' '*.hpp' | xargs clang-format --dry-run --Werror
-echo "1 passed, 0 failed: clang-format"
+echo "formatting: 1 passed, 0 failed"
