@@ -4,7 +4,6 @@
 #include <random>
 #include <stdexcept>
 
-#include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
@@ -111,11 +110,11 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
   vehicle.constrain(state, 0.0);
   controller.reset(0.0);
-  double plant_disturbance = parameters.matched_disturbance;
-  if (auto* lead = dynamic_cast<LeadWheelController*>(&controller)) {
-    lead->set_matched_disturbance(parameters.matched_disturbance);
-    plant_disturbance = 0.0;
-  }
+  // Matched disturbance: into the controller's chain where it has one, else into the plant.
+  const double plant_disturbance =
+      controller.set_matched_disturbance(parameters.matched_disturbance)
+          ? 0.0
+          : parameters.matched_disturbance;
   const double wheelbase = car.wheelbase_m();
   auto effective = [&](double delta) {
     return plant_disturbance == 0.0 ? delta

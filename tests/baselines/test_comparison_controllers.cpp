@@ -49,6 +49,10 @@ TEST_P(EveryController, ConvergesOnStraightLineFromRandomOffsets) {
                  " psi0=" + std::to_string(heading) + "; " + testing::seed_message(seed));
     ASSERT_EQ(result.status, Status::ok);
     EXPECT_FALSE(result.any_non_finite);
+    // Only the lead-wheel controllers (proposed_*, and dubins_smc = n = 0) have a
+    // matched-disturbance input, reached through the saturation wrapper.
+    const bool lead_wheel = GetParam().rfind("proposed", 0) == 0 || GetParam() == "dubins_smc";
+    EXPECT_EQ(controller->set_matched_disturbance(0.0), lead_wheel);
     // The Dubins SMC chatters by design; everything else settles tightly.
     const double tolerance = GetParam() == "dubins_smc" ? 0.1 : 0.02;
     EXPECT_LT(std::abs(result.final_lateral_error_m), tolerance);

@@ -114,6 +114,16 @@ TEST(ScheduledLoop, LimitsHoldWhileTheSpeedChanges) {
   }
 }
 
+TEST(ScheduledLoop, AcceptsTheMatchedDisturbanceOfItsChain) {
+  // Simulations inject kappa_d through SteeringController::set_matched_disturbance; the
+  // scheduled controller must pass it to its lead wheel rather than let it bend the plant.
+  auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 100.0));
+  ScheduledController controller(
+      compute_gain_schedule(example_vehicle(), {}, speed_grid(1.0, 5.0, 1.0), shared_map()), path);
+  SteeringController& any = controller;
+  EXPECT_TRUE(any.set_matched_disturbance(0.01));
+}
+
 TEST(Retune, KeepsTheSteeringRateForTheC1Controller) {
   // n = 2: d delta_veh/ds depends on (delta_1, delta_2) only, so retune() can and does keep it;
   // otherwise every retune of a gain schedule would be a step in the steering rate.

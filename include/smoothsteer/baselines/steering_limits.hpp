@@ -63,6 +63,10 @@ class SaturatedController final : public SteeringController {
   Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return name_.c_str(); }
+  //! Forwarded: the wrapped controller decides whether it has a matched-disturbance input.
+  bool set_matched_disturbance(double lead_curvature_disturbance) noexcept override {
+    return inner_->set_matched_disturbance(lead_curvature_disturbance);
+  }
 
   const SaturationStatistics& saturation() const noexcept { return saturator_.statistics(); }
   const SteeringLimits& limits() const noexcept { return saturator_.limits(); }

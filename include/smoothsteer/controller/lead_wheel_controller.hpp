@@ -47,9 +47,10 @@ class LeadWheelController final : public SteeringController {
   //! Evaluation hook: a matched disturbance kappa_d added to the lead-wheel curvature, i.e. the
   //! extended system receives kappa_n + kappa_d (paper Sec. III item 2: d psi_l / ds_l =
   //! kappa_l + kappa_d). The law stays convergent for |kappa_d| < k_rob kbar_n.
-  void set_matched_disturbance(double lead_curvature_disturbance) noexcept {
+  bool set_matched_disturbance(double lead_curvature_disturbance) noexcept override {
     matched_disturbance_ =
         std::isfinite(lead_curvature_disturbance) ? lead_curvature_disturbance : 0.0;
+    return true;
   }
 
   const ControllerParameters& parameters() const noexcept { return parameters_; }

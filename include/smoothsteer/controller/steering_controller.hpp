@@ -47,6 +47,13 @@ class SteeringController {
   //! Restarts from rest with the measured steering angle of the real vehicle [rad].
   virtual void reset(double measured_steering_angle_rad = 0.0) noexcept = 0;
   virtual const char* name() const noexcept = 0;
+  //! Evaluation hook: injects a matched disturbance kappa_d [1/m] into the controller's own
+  //! model where it has one (the lead wheel's curvature of the trailer chain). Returns false if
+  //! the controller has no such input; simulations then bend the plant's path instead.
+  virtual bool set_matched_disturbance(double lead_curvature_disturbance) noexcept {
+    (void)lead_curvature_disturbance;
+    return false;
+  }
 };
 
 }  // namespace smoothsteer

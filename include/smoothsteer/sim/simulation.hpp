@@ -27,9 +27,10 @@ struct SimulationParameters {
   //! (negative: before the end). Ignored for closed paths.
   double stop_beyond_path_end_m = 0.0;
   bool stop_at_path_end = true;
-  //! Matched curvature disturbance kappa_d [1/m]. For a LeadWheelController it is injected with
-  //! set_matched_disturbance (paper Sec. III item 2); for any other controller it bends the
-  //! rear-axle path: tan(delta_eff) = tan(delta) + L kappa_d.
+  //! Matched curvature disturbance kappa_d [1/m]. A controller that accepts
+  //! SteeringController::set_matched_disturbance (the lead-wheel controllers, paper Sec. III
+  //! item 2) gets it there; for any other it bends the rear-axle path:
+  //! tan(delta_eff) = tan(delta) + L kappa_d.
   double matched_disturbance = 0.0;
   double position_noise_std_m = 0.0;   //!< std of Gaussian noise on x and y of the rear axle [m]
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]

@@ -23,8 +23,8 @@ class ScheduledController final : public SteeringController {
   const GainSchedule& schedule() const noexcept { return schedule_; }
   const LeadWheelController& controller() const noexcept { return controller_; }
   //! Forwarded to the inner controller (evaluation hook, see LeadWheelController).
-  void set_matched_disturbance(double kappa_d) noexcept {
-    controller_.set_matched_disturbance(kappa_d);
+  bool set_matched_disturbance(double kappa_d) noexcept override {
+    return controller_.set_matched_disturbance(kappa_d);
   }
 
  private:
