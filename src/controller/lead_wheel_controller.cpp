@@ -24,15 +24,28 @@ bool valid_input(const ControllerInput& input) noexcept {
 
 LeadWheelController::LeadWheelController(const ControllerParameters& parameters,
                                          std::shared_ptr<const Path> path)
-    : parameters_(parameters), path_(std::move(path)) {
-  parameters_.validate();
+    : path_(std::move(path)) {
+  parameters.validate();
   if (!path_) throw std::invalid_argument("LeadWheelController: path is null; a path is required");
+  apply_parameters(parameters);
+  reset(0.0);
+}
+
+void LeadWheelController::apply_parameters(const ControllerParameters& parameters) noexcept {
+  parameters_ = parameters;
   bounds_ = compute_chain_bounds(parameters_);
+  chain_length_squared_ = 0.0;
+  double shortest = parameters_.order > 0 ? parameters_.wheelbases_m[0] : 0.0;
   for (int i = 0; i < parameters_.order; ++i) {
     const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared_ += lambda * lambda;
+    shortest = std::min(shortest, lambda);
   }
-  reset(0.0);
+  largest_substep_m_ = parameters_.max_substep_fraction * shortest;
+}
+
+double LeadWheelController::travel_heading(double heading) const noexcept {
+  return heading + (direction_ < 0.0 ? pi : 0.0);
 }
 
 double LeadWheelController::vehicle_steering_angle(double front_angle) const noexcept {
@@ -71,21 +84,15 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
   const double steering = n > 0 ? vehicle_steering_angle_of_chain() : last_steering_angle_;
   // For n >= 2, d delta_veh / ds depends on (delta_1, delta_2) only: keep it too, so that the
   // command stays C^1 across retunes and a gain schedule adds no steering-acceleration spikes.
+  // (For n >= 2, delta_1' does not depend on the lead curvature, so 0 is as good as any.)
   double rate_per_meter = 0.0;
   if (n >= 2) {
     const double* old_wheelbases = parameters_.wheelbases_m.data();
     rate_per_meter =
         vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / old_wheelbases[0]) *
-        (std::tan(angles_[1]) / (old_wheelbases[1] * std::cos(angles_[0])) -
-         std::tan(angles_[0]) / old_wheelbases[0]);
+        front_angle_derivatives(angles_, old_wheelbases, n, 0.0).first;
   }
-  parameters_ = parameters;
-  bounds_ = compute_chain_bounds(parameters_);
-  chain_length_squared_ = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
-    chain_length_squared_ += lambda * lambda;
-  }
+  apply_parameters(parameters);
   // No clamping into the new sets: a jump of the state would be a kink in delta_veh. A state
   // outside a shrunken set returns under the chain's flow (integrate_chain never pushes it out).
   if (n > 0) angles_[0] = front_angle_from_vehicle(steering);
@@ -117,11 +124,11 @@ double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
 }
 
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
-    Vec2 rear_position, double travel_heading) noexcept {
+    Vec2 rear_position, double rear_travel_heading) noexcept {
   // Lead-wheel state from projecting its own position (paper Sec. II end, notes §6).
   const int n = parameters_.order;
   ChainGeometry geometry;
-  chain_geometry(rear_position, travel_heading, angles_, parameters_.wheelbases_m.data(), n,
+  chain_geometry(rear_position, rear_travel_heading, angles_, parameters_.wheelbases_m.data(), n,
                  geometry);
   const auto lead = static_cast<std::size_t>(n);
   LeadWheelState state;
@@ -146,19 +153,16 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
   // `delay` seconds. Find the oldest such command, then roll the kinematic model forward through
   // them, oldest first, at the current speed.
   const KinematicSingleTrack model{parameters_.vehicle_wheelbase_m};
+  auto issued = [this](std::size_t age) -> const IssuedCommand& {  // age 0 = newest
+    return command_history_[(command_history_next_ + command_history_size - 1 - age) %
+                            command_history_size];
+  };
   std::size_t count = 0;
   double covered = 0.0;
-  while (count < command_history_count_ && covered < delay) {
-    const std::size_t slot =
-        (command_history_next_ + command_history_size - 1 - count) % command_history_size;
-    covered += command_history_[slot].period_s;
-    ++count;
-  }
+  while (count < command_history_count_ && covered < delay) covered += issued(count++).period_s;
   double overshoot = covered > delay ? covered - delay : 0.0;  // part of the oldest one
   for (std::size_t k = count; k-- > 0;) {
-    const IssuedCommand& command =
-        command_history_[(command_history_next_ + command_history_size - 1 - k) %
-                         command_history_size];
+    const IssuedCommand& command = issued(k);
     const double duration = command.period_s - overshoot;
     overshoot = 0.0;
     pose = model.step(pose, command.steering_rad, input.speed_mps, duration);
@@ -181,24 +185,21 @@ Status LeadWheelController::update(const ControllerInput& input,
   }
   // With a known actuator delay the law acts on the pose at which this command will take effect.
   const Pose2 law_pose = predicted_pose(input);
-  const double travel_heading = law_pose.heading_rad + (direction_ < 0.0 ? pi : 0.0);
 
   // One control period: the switching law is re-evaluated at every RK4 sub-step of the chain.
-  // The first sub-step uses the measured pose; later ones the rear-axle pose predicted by the
-  // chain's own kinematics (rear curvature tan(delta_1) / lambda_1). This keeps the discrete
-  // sliding band of the lead wheel at O(kbar h^2) for the sub-step h instead of O(kbar (v dt)^2).
+  // The first sub-step uses law_pose (measured, or predicted over the actuator delay); later ones
+  // the rear-axle pose predicted by the chain's own kinematics (rear curvature
+  // tan(delta_1) / lambda_1). This keeps the discrete sliding band of the lead wheel at
+  // O(kbar h^2) for the sub-step h instead of O(kbar (v dt)^2).
   const double distance = std::abs(input.speed_mps) * input.period_s;
   int steps = 1;
   if (n > 0 && distance > 0.0) {
-    double shortest = wheelbases[0];
-    for (int i = 1; i < n; ++i) shortest = std::min(shortest, wheelbases[i]);
-    const double largest_step = parameters_.max_substep_fraction * shortest;
-    steps = std::clamp(static_cast<int>(std::ceil(distance / largest_step)), 1,
+    steps = std::clamp(static_cast<int>(std::ceil(distance / largest_substep_m_)), 1,
                        parameters_.max_substeps);
   }
   const double step_length = distance / steps;
   Vec2 position = law_pose.position;
-  double heading = travel_heading;
+  double heading = travel_heading(law_pose.heading_rad);
   LeadWheelState first{};
   double applied_curvature = 0.0;
   for (int step = 0; step < steps; ++step) {
@@ -263,8 +264,8 @@ Status LeadWheelController::update(const ControllerInput& input,
   output.derivatives_available = derivatives;
   TrackingDiagnostics& diagnostics = output.diagnostics;
   diagnostics.lateral_error_m = rear_projection.lateral_error_m;
-  const double measured_travel_heading = input.heading_rad + (direction_ < 0.0 ? pi : 0.0);
-  diagnostics.heading_error_rad = wrap_angle(measured_travel_heading - rear_projection.heading_rad);
+  diagnostics.heading_error_rad =
+      wrap_angle(travel_heading(input.heading_rad) - rear_projection.heading_rad);
   diagnostics.front_lateral_error_m = front_projection.lateral_error_m;
   diagnostics.lead_lateral_error_m = first.projection.lateral_error_m;
   diagnostics.lead_heading_error_rad = first.relative_heading;

@@ -68,7 +68,11 @@ class LeadWheelController final : public SteeringController {
     double relative_heading = 0.0;
     SwitchingResult law;
   };
-  LeadWheelState evaluate_lead_wheel(Vec2 rear_position, double travel_heading) noexcept;
+  LeadWheelState evaluate_lead_wheel(Vec2 rear_position, double rear_travel_heading) noexcept;
+  //! Sets the parameters and what derives from them (bounds, sum lambda_i^2, sub-step length).
+  void apply_parameters(const ControllerParameters& parameters) noexcept;
+  //! Heading of the direction of travel: psi, or psi + pi while reversing.
+  double travel_heading(double heading) const noexcept;
   void initialise_chain(double vehicle_steering_angle) noexcept;
   double front_angle_from_vehicle(double vehicle_steering_angle) const noexcept;
   double vehicle_steering_angle_of_chain() const noexcept;
@@ -78,6 +82,7 @@ class LeadWheelController final : public SteeringController {
   ChainBounds bounds_;
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
+  double largest_substep_m_ = 0.0;     //!< max_substep_fraction * min lambda_i [m]
   //! Commands of the last periods, newest last, for the delay compensation (actuator_delay_s):
   //! a ring buffer, so that update() does not allocate. 512 periods cover 1 s down to 2 ms.
   struct IssuedCommand {
