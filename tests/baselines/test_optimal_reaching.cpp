@@ -14,18 +14,25 @@
 namespace smoothsteer {
 namespace {
 
+//! A random reaching problem; the draw order is part of each test's seeds.
+ReachingProblem random_problem(testing::Random& random, double min_rate_per_m, double max_heading,
+                               int intervals) {
+  ReachingProblem problem;
+  problem.wheelbase_m = random.uniform(0.5, 2.7);
+  problem.steering_angle_bound_rad = random.uniform(0.3, 0.6);
+  problem.steering_rate_bound_per_m = random.uniform(min_rate_per_m, 1.5);
+  problem.initial_lateral_error_m = random.uniform(-1.0, 1.0);
+  problem.initial_heading_rad = random.uniform(-max_heading, max_heading);
+  problem.intervals = intervals;
+  return problem;
+}
+
 TEST(OptimalReaching, ResimulationSatisfiesConstraintsAndReachesThePath) {
   const int cases = testing::property_cases(3);
   for (int index = 0; index < cases; ++index) {
     const auto seed = testing::case_seed(index);
     testing::Random random(seed);
-    ReachingProblem problem;
-    problem.wheelbase_m = random.uniform(0.5, 2.7);
-    problem.steering_angle_bound_rad = random.uniform(0.3, 0.6);
-    problem.steering_rate_bound_per_m = random.uniform(0.3, 1.5);
-    problem.initial_lateral_error_m = random.uniform(-1.0, 1.0);
-    problem.initial_heading_rad = random.uniform(-0.6, 0.6);
-    problem.intervals = 100;
+    const ReachingProblem problem = random_problem(random, 0.3, 0.6, 100);
     SCOPED_TRACE(testing::seed_message(seed));
     const ReachingSolution solution = solve_optimal_reaching(problem);
     ASSERT_TRUE(solution.converged) << solution.solver_status;
@@ -47,13 +54,7 @@ TEST(OptimalReaching, ExactHessianAndQuasiNewtonFindTheSameOptimum) {
   for (int index = 0; index < testing::property_cases(3); ++index) {
     const auto seed = testing::case_seed(index) + 5;
     testing::Random random(seed);
-    ReachingProblem problem;
-    problem.wheelbase_m = random.uniform(0.5, 2.7);
-    problem.steering_angle_bound_rad = random.uniform(0.3, 0.6);
-    problem.steering_rate_bound_per_m = random.uniform(0.5, 1.5);
-    problem.initial_lateral_error_m = random.uniform(-1.0, 1.0);
-    problem.initial_heading_rad = random.uniform(-0.5, 0.5);
-    problem.intervals = 60;
+    ReachingProblem problem = random_problem(random, 0.5, 0.5, 60);
     SCOPED_TRACE(testing::seed_message(seed));
     const ReachingSolution exact = solve_optimal_reaching(problem);
     problem.exact_hessian = false;

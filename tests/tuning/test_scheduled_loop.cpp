@@ -124,20 +124,24 @@ TEST(ScheduledLoop, AcceptsTheMatchedDisturbanceOfItsChain) {
   EXPECT_TRUE(any.set_matched_disturbance(0.01));
 }
 
+//! The paper's C^1 controller for a random lambda_l; kbar_l = sin(theta) / lambda_veh gives the
+//! real angle bound theta for any lambda_l.
+ControllerParameters random_paper_c1(Random& random, double vehicle, double theta) {
+  return ControllerParameters::paper_c1(vehicle, random.uniform(0.1, 0.9) * vehicle,
+                                        std::sin(theta) / vehicle, 0.3);
+}
+
 TEST(Retune, KeepsTheSteeringRateForTheC1Controller) {
   // n = 2: d delta_veh/ds depends on (delta_1, delta_2) only, so retune() can and does keep it;
   // otherwise every retune of a gain schedule would be a step in the steering rate.
   auto path = std::make_shared<const Path>(Path::straight_line({-100.0, 0.0}, 0.0, 400.0));
-  int compared = 0;
   for (int k = 0; k < property_cases(40); ++k) {
     Random random(case_seed(k) + 34);
     const double vehicle = random.uniform(2.0, 3.5);
     const double theta = random.uniform(0.2, 0.8);
-    const ControllerParameters a = ControllerParameters::paper_c1(
-        vehicle, random.uniform(0.1, 0.9) * vehicle, std::sin(theta) / vehicle, 0.3);
+    const ControllerParameters a = random_paper_c1(random, vehicle, theta);
     const ControllerParameters b =
-        ControllerParameters::paper_c1(vehicle, random.uniform(0.1, 0.9) * vehicle,
-                                       std::sin(theta * random.uniform(0.9, 1.1)) / vehicle, 0.3);
+        random_paper_c1(random, vehicle, theta * random.uniform(0.9, 1.1));
     SCOPED_TRACE(seed_message(case_seed(k) + 34));
     LeadWheelController controller(a, path);
     ControllerOutput out;
@@ -151,16 +155,12 @@ TEST(Retune, KeepsTheSteeringRateForTheC1Controller) {
     ASSERT_EQ(controller.update(probe, out), Status::ok);
     const double angle_before = out.steering_angle_rad, rate_before = out.steering_rate_radps;
     ASSERT_EQ(controller.retune(b), Status::ok);
-    const bool clamped = std::abs(controller.chain_angles()[0]) >= controller.bounds().angle[0] ||
-                         std::abs(controller.chain_angles()[1]) >= controller.bounds().angle[1];
     ASSERT_EQ(controller.update(probe, out), Status::ok);
+    // retune() never clamps (a state outside a shrunken set returns under the flow), so both
+    // are kept in every case.
     EXPECT_NEAR(out.steering_angle_rad, angle_before, 1e-9);
-    if (!clamped) {
-      EXPECT_NEAR(out.steering_rate_radps, rate_before, 1e-9 * (1.0 + std::abs(rate_before)));
-      ++compared;
-    }
+    EXPECT_NEAR(out.steering_rate_radps, rate_before, 1e-9 * (1.0 + std::abs(rate_before)));
   }
-  EXPECT_GT(compared, 0);
 }
 
 TEST(Retune, KeepsSteeringContinuousAndRejectsBadParameters) {
@@ -170,11 +170,9 @@ TEST(Retune, KeepsSteeringContinuousAndRejectsBadParameters) {
     const double vehicle = random.uniform(2.0, 3.5);
     // kbar_l = sin(theta) / lambda_veh gives the real angle bound theta for any lambda_l.
     const double theta = random.uniform(0.1, 0.8);
-    const ControllerParameters a = ControllerParameters::paper_c1(
-        vehicle, random.uniform(0.1, 0.9) * vehicle, std::sin(theta) / vehicle, 0.3);
+    const ControllerParameters a = random_paper_c1(random, vehicle, theta);
     const ControllerParameters b =
-        ControllerParameters::paper_c1(vehicle, random.uniform(0.1, 0.9) * vehicle,
-                                       std::sin(theta * random.uniform(1.0, 1.5)) / vehicle, 0.3);
+        random_paper_c1(random, vehicle, theta * random.uniform(1.0, 1.5));
     SCOPED_TRACE(seed_message(case_seed(k) + 33));
     LeadWheelController controller(a, path);
     const double measured = random.uniform(-1.0, 1.0) * controller.bounds().steering_angle_rad;
