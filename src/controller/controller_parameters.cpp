@@ -56,6 +56,15 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
   if (!std::isfinite(p.k_rob) || p.k_rob < 0.0 || p.k_rob >= 1.0) {
     return fail(text("k_rob"), p.k_rob, text("must be in [0, 1) (eq. sigma divides by 1 - k_rob)"));
   }
+  if (!std::isfinite(p.feedforward_share) || p.feedforward_share < 0.0 ||
+      p.feedforward_share >= 1.0) {
+    return fail(text("feedforward_share"), p.feedforward_share,
+                text("must be in [0, 1) (the switching part needs kbar_n - kbar_ff > 0)"));
+  }
+  if (std::isnan(p.feedforward_curvature_rate) || p.feedforward_curvature_rate < 0.0) {
+    return fail(text("feedforward_curvature_rate"), p.feedforward_curvature_rate,
+                text("must be >= 0 (+inf: no rate limit)"));
+  }
   if (!std::isfinite(p.boundary_layer) || p.boundary_layer < 0.0) {
     return fail(text("boundary_layer"), p.boundary_layer, text("must be finite and >= 0"));
   }
@@ -128,6 +137,8 @@ ControllerParameters ControllerParameters::paper_c1(double vehicle_wheelbase_m,
   parameters.lead_curvature_bound = lead_curvature_bound;
   parameters.k_rob = k_rob;
   parameters.cornering_target = CorneringTarget::lead_wheel;
+  parameters.feedforward_share = 0.0;  // the paper's law: no feedforward
+  parameters.boundary_layer = 0.0;     // and kappa_n = kbar_n sign(sigma)
   parameters.validate();
   return parameters;
 }
@@ -141,6 +152,8 @@ ControllerParameters ControllerParameters::paper_c0(double vehicle_wheelbase_m,
   parameters.lead_curvature_bound = front_curvature_bound;
   parameters.k_rob = k_rob;
   parameters.cornering_target = CorneringTarget::lead_wheel;
+  parameters.feedforward_share = 0.0;  // the paper's law: no feedforward
+  parameters.boundary_layer = 0.0;     // and kappa_n = kbar_n sign(sigma)
   parameters.validate();
   return parameters;
 }

@@ -11,6 +11,11 @@ double vehicle_angle_gain(double front_angle, double ratio) noexcept {
   return ratio / (c * c + ratio * ratio * s * s);
 }
 
+double vehicle_angle_gain_slope(double front_angle, double ratio) noexcept {
+  const double gain = vehicle_angle_gain(front_angle, ratio);
+  return -gain * gain * std::sin(2.0 * front_angle) * (ratio * ratio - 1.0) / ratio;
+}
+
 namespace {
 
 //! |d delta_1/ds| in the worst case for a given delta_1 inside the invariant set:
@@ -156,16 +161,23 @@ void tangent_rates(const ChainAngles& tangent, const double* wheelbases, int ord
 
 void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
                      double ds, const ChainAngles& angle_bound) noexcept {
+  integrate_chain(delta, wheelbases, order, lead_curvature, lead_curvature, ds, angle_bound);
+}
+
+void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
+                     double lead_curvature_end, double ds,
+                     const ChainAngles& angle_bound) noexcept {
   ChainAngles t{}, k1{}, k2{}, k3{}, k4{}, probe{};
   const auto n = static_cast<std::size_t>(order);
+  const double lead_curvature_mid = 0.5 * (lead_curvature + lead_curvature_end);
   for (std::size_t i = 0; i < n; ++i) t[i] = std::tan(delta[i]);
   tangent_rates(t, wheelbases, order, lead_curvature, k1);
   for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + 0.5 * ds * k1[i];
-  tangent_rates(probe, wheelbases, order, lead_curvature, k2);
+  tangent_rates(probe, wheelbases, order, lead_curvature_mid, k2);
   for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + 0.5 * ds * k2[i];
-  tangent_rates(probe, wheelbases, order, lead_curvature, k3);
+  tangent_rates(probe, wheelbases, order, lead_curvature_mid, k3);
   for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + ds * k3[i];
-  tangent_rates(probe, wheelbases, order, lead_curvature, k4);
+  tangent_rates(probe, wheelbases, order, lead_curvature_end, k4);
   for (std::size_t i = 0; i < n; ++i) {
     const double next = t[i] + ds / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
     // Never outward past the set, never inward by a jump: a state that a retune left outside a

@@ -19,8 +19,19 @@ namespace {
 //! wheelbase of eq. (cornering_constr), the lead wheel on the path, k_rob = 0.3 (notes §5).
 //! Keys shared by the fixed and the scheduled lead-wheel controller.
 void read_law_options(ConfigSection& c, ControllerParameters& p) {
+  const ControllerParameters defaults;
   p.k_rob = c.number("k_rob", 0.3, {0.0, 1.0, false, true});
-  p.boundary_layer = c.number("boundary_layer", 0.0, Range::non_negative());
+  p.boundary_layer = c.number("boundary_layer", defaults.boundary_layer, Range::non_negative());
+  p.feedforward_share =
+      c.number("feedforward_share", defaults.feedforward_share, {0.0, 1.0, false, true});
+  // Absent: the C++ default, no rate limit (+inf, null in the resolved parameters).
+  if (c.has("feedforward_curvature_rate")) {
+    p.feedforward_curvature_rate =
+        c.required_number("feedforward_curvature_rate", Range::non_negative());
+  } else {
+    p.feedforward_curvature_rate = defaults.feedforward_curvature_rate;
+    c.store("feedforward_curvature_rate", YAML::Node(YAML::NodeType::Null));
+  }
   p.actuator_delay_s =
       c.number("actuator_delay_s", 0.0, {0.0, ControllerParameters::max_actuator_delay_s});
   p.approach_angle_rad = c.number("approach_angle_rad", std::numbers::pi / 2.0,

@@ -199,7 +199,31 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   path.start_ = segments.front().evaluate_parameter(0.0);
   path.end_ = segments.back().evaluate_parameter(segments.back().parameter_end());
   path.segments_ = std::move(segments);
+  // Curvature samples for the feedforward's preview (docs/feedforward.md): every 0.25 m, coarser
+  // on paths so long that this would exceed max_curvature_samples.
+  path.curvature_spacing_ = std::max(curvature_sample_spacing,
+                                     path.length_ / static_cast<double>(max_curvature_samples - 1));
+  const auto count =
+      static_cast<std::size_t>(std::ceil(path.length_ / path.curvature_spacing_)) + 1;
+  path.curvature_samples_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double at = std::min(path.length_, static_cast<double>(i) * path.curvature_spacing_);
+    path.curvature_samples_[i] = path.evaluate(at).curvature;
+  }
   return path;
+}
+
+double Path::sampled_curvature(double arc_length_m) const noexcept {
+  if (curvature_samples_.empty() || !std::isfinite(arc_length_m)) return 0.0;
+  double s = arc_length_m;
+  if (closed_) {
+    s = std::fmod(s, length_);
+    if (s < 0.0) s += length_;
+  } else if (s < 0.0 || s > length_) {
+    return 0.0;  // the end extensions are straight
+  }
+  const auto index = static_cast<std::size_t>(std::lround(s / curvature_spacing_));
+  return curvature_samples_[std::min(index, curvature_samples_.size() - 1)];
 }
 
 PathPoint Path::evaluate(double arc_length_m) const noexcept {

@@ -69,6 +69,10 @@ std::string VehicleParameters::validation_error() const {
   if (!positive(max_steering_rate_radps)) {
     return describe("max_steering_rate_radps", max_steering_rate_radps, "must be finite and > 0");
   }
+  if (std::isnan(max_steering_acceleration_radps2) || max_steering_acceleration_radps2 <= 0.0) {
+    return describe("max_steering_acceleration_radps2", max_steering_acceleration_radps2,
+                    "must be > 0 (+inf: none)");
+  }
   if (!std::isfinite(kinematic_below_mps) || kinematic_below_mps < 0.1) {
     return describe("kinematic_below_mps", kinematic_below_mps,
                     "must be >= 0.1 (slip angles are singular at v = 0)");

@@ -17,6 +17,13 @@
 namespace smoothsteer {
 namespace {
 
+//! The paper's route (Certificate::box); the feedforward route has its own tests.
+TuningOptions box_route() {
+  TuningOptions options;
+  options.certificate = Certificate::box;
+  return options;
+}
+
 using namespace smoothsteer::testing;
 
 VehicleLimits example_vehicle() {
@@ -28,7 +35,7 @@ VehicleLimits example_vehicle() {
 TEST(ScheduledLoop, LimitsHoldAtConstantSpeedsFromAnyStart) {
   const VehicleLimits vehicle = example_vehicle();
   const GainSchedule schedule =
-      compute_gain_schedule(vehicle, {}, speed_grid(1.0, 30.0, 0.5), shared_map());
+      compute_gain_schedule(vehicle, box_route(), speed_grid(1.0, 30.0, 0.5), shared_map());
   auto path = std::make_shared<const Path>(Path::straight_line({-500.0, 0.0}, 0.0, 20000.0));
   const int cases = property_cases(8);
   for (int k = 0; k < cases; ++k) {
@@ -61,6 +68,7 @@ TEST(ScheduledLoop, LimitsHoldAtConstantSpeedsFromAnyStart) {
 TEST(ScheduledLoop, LimitsHoldWhileTheSpeedChanges) {
   const VehicleLimits vehicle = example_vehicle();
   TuningOptions options;
+  options.certificate = Certificate::box;  // the paper's route
   options.max_longitudinal_acceleration_mps2 = 2.0;
   const GainSchedule schedule =
       compute_gain_schedule(vehicle, options, speed_grid(1.0, 30.0, 0.5), shared_map());
@@ -118,8 +126,9 @@ TEST(ScheduledLoop, AcceptsTheMatchedDisturbanceOfItsChain) {
   // Simulations inject kappa_d through SteeringController::set_matched_disturbance; the
   // scheduled controller must pass it to its lead wheel rather than let it bend the plant.
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 100.0));
-  ScheduledController controller(
-      compute_gain_schedule(example_vehicle(), {}, speed_grid(1.0, 5.0, 1.0), shared_map()), path);
+  ScheduledController controller(compute_gain_schedule(example_vehicle(), box_route(),
+                                                       speed_grid(1.0, 5.0, 1.0), shared_map()),
+                                 path);
   SteeringController& any = controller;
   EXPECT_TRUE(any.set_matched_disturbance(0.01));
 }

@@ -37,6 +37,8 @@ struct ChainBounds {
 //! d delta_veh / d delta_1 for delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1
 //! (notes §3): r / (cos^2 delta_1 + r^2 sin^2 delta_1).
 double vehicle_angle_gain(double front_angle, double ratio) noexcept;
+//! d gain / d delta_1 = -gain^2 sin(2 delta_1) (r^2 - 1) / r.
+double vehicle_angle_gain_slope(double front_angle, double ratio) noexcept;
 
 //! Propagates kbar_n down the chain: kbar_{i-1} = kbar_i / sqrt(1 - kbar_i^2 lambda_i^2).
 //! Requires valid parameters.
@@ -77,5 +79,9 @@ void stationary_chain(double front_angle, const double* wheelbases, int order,
 //! there (LeadWheelController::retune).
 void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
                      double ds, const ChainAngles& angle_bound) noexcept;
+//! The same with a lead curvature that changes linearly from lead_curvature to
+//! lead_curvature_end over the step (the rate-limited feedforward, docs/feedforward.md).
+void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
+                     double lead_curvature_end, double ds, const ChainAngles& angle_bound) noexcept;
 
 }  // namespace smoothsteer
