@@ -38,7 +38,7 @@ OutputSlopes output_slope_bounds(double vehicle_wheelbase_m, double front_wheelb
 }
 
 SteeringCertificate feedforward_certificate(const ControllerParameters& parameters) noexcept {
-  return feedforward_certificate(parameters, compute_chain_bounds(parameters));
+  return feedforward_certificate(parameters, compute_invariant_sets(parameters));
 }
 
 SteeringCertificate feedforward_certificate(const ControllerParameters& parameters,

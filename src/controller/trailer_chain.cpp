@@ -26,7 +26,7 @@ double worst_front_rate(double front_angle, double kbar_1, double lambda_1) noex
 
 }  // namespace
 
-ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
+ChainBounds compute_invariant_sets(const ControllerParameters& parameters) noexcept {
   ChainBounds bounds;
   const int n = parameters.order;
   bounds.curvature[static_cast<std::size_t>(n)] = parameters.lead_curvature_bound;
@@ -39,6 +39,12 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
     bounds.curvature[index - 1] = kbar / std::sqrt(1.0 - product * product);  // paper-notes §2
   }
   bounds.steering_angle_rad = std::atan(parameters.vehicle_wheelbase_m * bounds.curvature[0]);
+  return bounds;
+}
+
+ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
+  ChainBounds bounds = compute_invariant_sets(parameters);
+  const int n = parameters.order;
   if (n == 0) {
     bounds.steering_rate_per_meter = std::numeric_limits<double>::infinity();
     return bounds;
@@ -183,7 +189,13 @@ void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, do
     // Never outward past the set, never inward by a jump: a state that a retune left outside a
     // shrunken set returns under the chain's own flow (which points inward there), so
     // delta_veh stays C^1 while a gain schedule changes the sets.
-    const double limit = std::max(angle_bound[i], std::abs(delta[i]));
+    // The set of delta_i is invariant only while its input kappa_i is bounded, i.e. while
+    // delta_{i+1} lies in its own set. A retune can leave delta_{i+1} outside a shrunken set:
+    // then delta_i follows the flow unclamped, instead of being frozen at its bound (which
+    // stalled the command and overshot its acceleration, ScheduledLoop.RetuneNeverFreezes...).
+    const bool input_bounded = i + 1 >= n || std::abs(delta[i + 1]) <= angle_bound[i + 1];
+    const double limit = input_bounded ? std::max(angle_bound[i], std::abs(delta[i]))
+                                       : std::numeric_limits<double>::infinity();
     delta[i] = std::clamp(std::atan(next), -limit, limit);
   }
 }

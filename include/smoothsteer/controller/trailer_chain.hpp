@@ -43,6 +43,8 @@ double vehicle_angle_gain_slope(double front_angle, double ratio) noexcept;
 //! Propagates kbar_n down the chain: kbar_{i-1} = kbar_i / sqrt(1 - kbar_i^2 lambda_i^2).
 //! Requires valid parameters.
 ChainBounds compute_chain_bounds(const ControllerParameters& parameters);
+//! The same without the rate supremum (steering_rate_per_meter stays 0): the invariant sets only.
+ChainBounds compute_invariant_sets(const ControllerParameters& parameters) noexcept;
 
 //! d delta_i / ds for i = 1..n (derivatives with respect to the REAR arc length s).
 void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
