@@ -4,7 +4,7 @@
 #include <exception>
 
 #include "commands.hpp"
-#include "smoothsteer/baselines/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/controller_registration.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"smoothsteer: n-smooth, differentially bounded path-tracking control"};

@@ -89,13 +89,12 @@ std::span<const double> MpcController::planned_steering() const noexcept {
 }
 
 void MpcController::reset(double measured_steering_angle_rad) noexcept {
-  const double angle =
-      std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
-  steering_estimate_ = previous_command_ = command_before_ = angle;
-  workspace_->plan.setConstant(angle);
+  // Clamped, so that the constrained QP (|u_0 - u_prev| <= rate T_c) stays feasible.
+  detail::reset_tracking(measured_steering_angle_rad, previous_command_, rear_hint_, front_hint_,
+                         parameters_.limits.angle_rad);
+  steering_estimate_ = command_before_ = previous_command_;
+  workspace_->plan.setConstant(previous_command_);
   first_update_ = true;
-  rear_hint_.reset();
-  front_hint_.reset();
 }
 
 Status MpcController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
@@ -139,14 +138,8 @@ Status MpcController::update(const ControllerInput& input, ControllerOutput& out
     command = std::clamp(std::clamp(work.plan(0), -angle, angle), previous_command_ - step,
                          previous_command_ + step);
   }
-  output.steering_angle_rad = command;
-  output.steering_rate_radps = (command - previous_command_) / period;
-  output.steering_acceleration_radps2 = 0.0;
-  output.derivatives_available = 0;
-  output.diagnostics.sliding_variable = rear.projection.lateral_error_m;
-  output.diagnostics.lead_curvature = std::tan(command) / parameters_.wheelbase_m;
-  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, command,
-                           output.diagnostics);
+  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, command,
+                      previous_command_, rear.projection.lateral_error_m, output);
   command_before_ = previous_command_;
   previous_command_ = command;
   return Status::ok;

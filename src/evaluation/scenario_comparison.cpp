@@ -1,12 +1,9 @@
-#include "smoothsteer/baselines/scenario_comparison.hpp"
-
-#ifdef SMOOTHSTEER_HAS_io
+#include "smoothsteer/evaluation/scenario_comparison.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
-#include "smoothsteer/io/controller_registry.hpp"
 #include "smoothsteer/io/scenario.hpp"
 
 namespace smoothsteer {
@@ -25,89 +22,8 @@ ComparisonSetup setup_for(std::shared_ptr<const Path> path, double wheelbase_m, 
 
 }  // namespace
 
-namespace {
-
-//! The gains of one baseline as keys of its controller section; the keys are the parameter
-//! fields, so a validate() message ("LqrParameters: weight_lateral = ...") names the key.
-void read_baseline_gains(const std::string& name, io::ConfigSection& section,
-                         ComparisonSetup& setup) {
-  const io::Range positive = io::Range::positive(), non_negative = io::Range::non_negative();
-  if (name == "stanley") {
-    StanleyParameters& p = setup.stanley;
-    p.gain_per_s = section.number("gain_per_s", p.gain_per_s, positive);
-    p.softening_mps = section.number("softening_mps", p.softening_mps, positive);
-  } else if (name == "pure_pursuit") {
-    PurePursuitParameters& p = setup.pure_pursuit;
-    p.min_lookahead_m = section.number("min_lookahead_m", p.min_lookahead_m, positive);
-    p.lookahead_time_s = section.number("lookahead_time_s", p.lookahead_time_s, non_negative);
-    p.max_lookahead_m = section.number("max_lookahead_m", p.max_lookahead_m, positive);
-  } else if (name == "lqr") {
-    LqrParameters& p = setup.lqr;
-    p.weight_lateral = section.number("weight_lateral", p.weight_lateral, positive);
-    p.weight_heading = section.number("weight_heading", p.weight_heading, non_negative);
-    p.weight_steering = section.number("weight_steering", p.weight_steering, positive);
-    p.curvature_feedforward = section.boolean("curvature_feedforward", p.curvature_feedforward);
-  } else if (name == "newton_raphson") {
-    NewtonRaphsonParameters& p = setup.newton_raphson;
-    p.horizon_s = section.number("horizon_s", p.horizon_s, positive);
-    p.gain_per_s = section.number("gain_per_s", p.gain_per_s, positive);
-  } else if (name == "mpc" || name == "mpc_constrained") {
-    MpcParameters& p = setup.mpc;
-    p.steering_time_constant_s =
-        section.number("steering_time_constant_s", p.steering_time_constant_s, positive);
-    p.horizon_steps = section.integer("horizon_steps", p.horizon_steps, 2, 200);
-    p.prediction_step_s = section.number("prediction_step_s", p.prediction_step_s, positive);
-    const auto weight = [&](const char* key, double& value) {
-      value = section.number(key, value, non_negative);
-    };
-    weight("weight_lateral_error", p.weight_lateral_error);
-    weight("weight_heading_error", p.weight_heading_error);
-    weight("weight_heading_error_squared_speed", p.weight_heading_error_squared_speed);
-    p.weight_steering_input =
-        section.number("weight_steering_input", p.weight_steering_input, positive);
-    weight("weight_steering_input_squared_speed", p.weight_steering_input_squared_speed);
-    weight("weight_steering_rate", p.weight_steering_rate);
-    weight("weight_steering_acceleration", p.weight_steering_acceleration);
-    weight("weight_terminal_lateral_error", p.weight_terminal_lateral_error);
-    weight("weight_terminal_heading_error", p.weight_terminal_heading_error);
-    weight("zero_feedforward_angle_rad", p.zero_feedforward_angle_rad);
-  }
-}
-
-}  // namespace
-
-void register_comparison_controllers() {
-  for (const std::string& name : comparison_controller_names()) {
-    io::register_controller_type(
-        name,
-        [name](io::ConfigSection& section, std::shared_ptr<const Path> path,
-               const VehicleParameters& vehicle) -> std::unique_ptr<SteeringController> {
-          // Limits C1 and C2: the vehicle's, unless the section sets the rate limit (e.g. to
-          // the scenario actuator's max_rate_radps).
-          const SteeringLimits limits{
-              vehicle.max_steering_angle_rad,
-              section.number("max_steering_rate_radps", vehicle.max_steering_rate_radps,
-                             io::Range::positive())};
-          ComparisonSetup setup =
-              setup_for(std::move(path), vehicle.wheelbase_m(),
-                        section.number("nominal_speed_mps", 10.0, io::Range::positive()), limits);
-          setup.k_rob = section.number("k_rob", setup.k_rob, {0.0, 1.0, false, true});
-          setup.hosm_heading_bound_rad = section.number(
-              "hosm_heading_bound_rad", setup.hosm_heading_bound_rad, io::Range::positive());
-          setup.lead_wheelbase_m =
-              section.number("lead_wheelbase_m", setup.lead_wheelbase_m, io::Range::positive());
-          read_baseline_gains(name, section, setup);
-          try {
-            return make_comparison_controller(name, setup);
-          } catch (const std::invalid_argument& error) {
-            throw io::ConfigError(section.file() + ": key '" + section.full_key("") +
-                                  "': " + error.what());
-          }
-        });
-  }
-}
-
-ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files) {
+ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files,
+                                        const PaperFigures& paper) {
   ResultsTable table;
   table.title = "Lane change (Falcone et al. 2007) on the kinetic model with actuator";
   table.header = {"speed_mps",         "controller",       "max_abs_e_m",
@@ -117,10 +33,7 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
   for (const std::string& file : scenario_files) {
     const io::Scenario scenario = io::load_scenario(file);
     const double speed = scenario.speed.initial_speed_mps;
-    const double paper = std::abs(speed - 10.0) < 0.5   ? 0.012
-                         : std::abs(speed - 15.0) < 0.5 ? 0.39
-                         : std::abs(speed - 19.0) < 0.5 ? 0.99
-                                                        : std::nan("");
+    const std::string speed_key = ResultsTable::number(speed, 1);
     // The scenario's own controller is the proposed one (lead_wheel, paper parameters).
     {
       const io::RunResult run = io::run_scenario(scenario);
@@ -131,7 +44,7 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
                             ResultsTable::number(m.command_acceleration_max_radps2, 2),
                             std::to_string(m.angle_violations), std::to_string(m.rate_violations),
                             "", "", ResultsTable::number(m.max_abs_side_slip_rad),
-                            ResultsTable::number(paper)});
+                            paper.text("lane_change", speed_key, "proposed_max_e_m", 3)});
     }
     for (const std::string& name : comparison_controller_names()) {
       // Every controller gets the limits the simulated actuator enforces, so that all rows are
@@ -159,10 +72,8 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
       "(max_angle_rad, max_rate_radps); proposed_c0/c1 are sized so that their worst case fits "
       "them at the scenario speed. angle_hits / rate_hits: updates in which the saturation "
       "clamped the raw command; for the scenario row: metric violations of the vehicle file's "
-      "limits (0.4 rad/s). Paper (Sec. IV-C, proposed, C^1): 0.012 / 0.39 / 0.99 m at 10 / 15 / 19 "
-      "m/s; "
-      "Newton-Raphson flow of Shivam et al. with a slip model: 0.07 m at 10 m/s, 0.25 m at 19 "
-      "m/s."};
+      "limits (0.4 rad/s). paper_max_e_m: the paper's proposed C^1 controller (Sec. IV-C), from "
+      "data/paper_figures.csv."};
   return table;
 }
 
@@ -209,5 +120,3 @@ ResultsTable run_parameter_comparison(const std::string& scenario_file) {
 }
 
 }  // namespace smoothsteer
-
-#endif  // SMOOTHSTEER_HAS_io

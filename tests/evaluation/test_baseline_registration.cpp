@@ -9,7 +9,7 @@
 
 #include "smoothsteer/baselines/geometric_controllers.hpp"
 #include "smoothsteer/baselines/mpc_controller.hpp"
-#include "smoothsteer/baselines/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/controller_registration.hpp"
 #include "smoothsteer/io/controller_registry.hpp"
 
 namespace smoothsteer {
