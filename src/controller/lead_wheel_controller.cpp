@@ -6,6 +6,7 @@
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace smoothsteer {
 namespace {

@@ -20,8 +20,8 @@
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/controller/trailer_chain.hpp"
+#include "smoothsteer/math/pose2.hpp"
 #include "smoothsteer/path/path.hpp"
-#include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace smoothsteer {
 
