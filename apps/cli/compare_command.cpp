@@ -5,6 +5,7 @@
 //   roc           Tab. roc_vx: optimal (Ipopt) vs proposed (n = 1) vs HOSM reaching distance
 //   lane-change   every controller on scenarios/lane_change_{10,15,19}.yaml
 //   parameters    circle_sections.yaml with the four settings of Sec. IV-A
+//   tuning        every controller tuned by one rule on training scenarios, reported held-out
 // Options of `compare` work before or after the sub-command (`compare parameters -o DIR`).
 
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "smoothsteer/evaluation/paper_figures.hpp"
 #include "smoothsteer/evaluation/reaching_benchmark.hpp"
 #include "smoothsteer/evaluation/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/tuning_rule.hpp"
 
 namespace smoothsteer::cli {
 
@@ -27,12 +29,24 @@ struct CompareOptions {
   double lateral_tolerance_m = 0.01;
   double heading_tolerance_rad = 0.01;
   int intervals = 150;
+  int budget = 16;
+  std::vector<std::string> training{"lane_change_10", "lane_change_19"};
+  std::vector<std::string> held_out{"lane_change_15", "circle_sections"};
 };
 
 void emit(const ResultsTable& table, const CompareOptions& options, const std::string& stem) {
   table.write(options.output_directory, stem);
   std::printf("%s\nwritten: %s/%s.csv and .md\n", table.to_markdown().c_str(),
               options.output_directory.c_str(), stem.c_str());
+}
+
+std::vector<io::Scenario> load_scenarios(const CompareOptions& options,
+                                         const std::vector<std::string>& names) {
+  std::vector<io::Scenario> scenarios;
+  for (const std::string& name : names) {
+    scenarios.push_back(io::load_scenario(options.scenario_directory + "/" + name + ".yaml"));
+  }
+  return scenarios;
 }
 
 PaperFigures paper_figures(const CompareOptions& options) {
@@ -88,6 +102,22 @@ void add_compare_command(CLI::App& app) {
   parameters->callback([options] {
     emit(run_parameter_comparison(options->scenario_directory + "/circle_sections.yaml"), *options,
          "parameter_radar");
+  });
+  CLI::App* tuning = compare->add_subcommand(
+      "tuning", "every controller tuned by one rule, reported on held-out scenarios");
+  tuning->add_option("--budget", options->budget, "configurations per controller (power of 2)")
+      ->capture_default_str();
+  tuning->add_option("--train", options->training, "scenario names the gains are chosen on")
+      ->capture_default_str();
+  tuning->add_option("--held-out", options->held_out, "scenario names the table reports")
+      ->capture_default_str();
+  tuning->callback([options] {
+    TuningRuleOptions rule;
+    rule.budget = options->budget;
+    emit(run_tuning_rule(load_scenarios(*options, options->training),
+                         load_scenarios(*options, options->held_out), rule)
+             .table(),
+         *options, "tuning_rule");
   });
 }
 

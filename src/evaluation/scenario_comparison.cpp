@@ -3,24 +3,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "scenario_setup.hpp"
 #include "smoothsteer/baselines/comparison_controllers.hpp"
 #include "smoothsteer/io/scenario.hpp"
 
 namespace smoothsteer {
-
-namespace {
-
-ComparisonSetup setup_for(std::shared_ptr<const Path> path, double wheelbase_m, double speed,
-                          SteeringLimits limits) {
-  ComparisonSetup setup;
-  setup.path = std::move(path);
-  setup.wheelbase_m = wheelbase_m;
-  setup.nominal_speed_mps = speed;
-  setup.limits = limits;
-  return setup;
-}
-
-}  // namespace
 
 ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files,
                                         const PaperFigures& paper) {
@@ -49,10 +36,7 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
     for (const std::string& name : comparison_controller_names()) {
       // Every controller gets the limits the simulated actuator enforces, so that all rows are
       // compared under the same C1 and C2.
-      const SteeringLimits limits{scenario.actuator.max_angle_rad,
-                                  scenario.actuator.max_rate_radps};
-      auto controller = make_comparison_controller(
-          name, setup_for(scenario.path, scenario.vehicle.wheelbase_m(), speed, limits));
+      auto controller = make_comparison_controller(name, detail::comparison_setup_for(scenario));
       const io::RunResult run = io::run_scenario(scenario, *controller);
       const Metrics& m = run.metrics;
       const SaturationStatistics& s = controller->saturation();
