@@ -57,8 +57,9 @@ struct TuningRuleOptions {
 //! How one configuration did on one scenario.
 struct ScenarioScore {
   std::string scenario;
-  double max_abs_e_m = 0.0;     //!< rear axle, whole run
-  double rate_std_radps = 0.0;  //!< std of the command's rate
+  double max_abs_e_m = 0.0;                  //!< rear axle, whole run
+  double max_abs_e_after_reaching_m = -1.0;  //!< rear axle after reaching; -1: not reached
+  double rate_std_radps = 0.0;               //!< std of the command's rate
   double max_side_slip_rad = 0.0;
   long clamped_updates = 0;  //!< updates the saturation clamped (above the limits)
   bool diverged = false;     //!< max |e| > divergence_m or a non-finite sample
