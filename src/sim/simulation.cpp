@@ -1,5 +1,7 @@
 #include "smoothsteer/sim/simulation.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -9,8 +11,15 @@
 namespace smoothsteer {
 namespace {
 
+//! Shortest text that reads back as exactly `value` (0.0200001 stays 0.0200001).
+std::string exact(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
 std::string describe(const char* field, double value, const std::string& rule) {
-  return std::string("SimulationParameters: ") + field + " = " + std::to_string(value) + " " + rule;
+  return std::string("SimulationParameters: ") + field + " = " + exact(value) + " " + rule;
 }
 
 using PlantArray = std::array<double, VehicleState::size>;
@@ -51,6 +60,13 @@ bool finite(const VehicleState& s) {
   return true;
 }
 
+bool all_finite(const TraceSample& sample) {
+  for (double v : trace_row(sample)) {
+    if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string SimulationParameters::validation_error() const {
@@ -63,10 +79,22 @@ std::string SimulationParameters::validation_error() const {
   const double ratio = control_period_s / substep_s;
   if (std::abs(ratio - std::round(ratio)) > 1e-6) {
     return describe("control_period_s", control_period_s,
-                    "must be a whole multiple of substep_s = " + std::to_string(substep_s));
+                    "must be a whole multiple of substep_s = " + exact(substep_s));
   }
   if (!std::isfinite(duration_s) || duration_s <= 0.0 || duration_s > 3600.0) {
     return describe("duration_s", duration_s, "must be in (0, 3600]");
+  }
+  if (duration_s / control_period_s > max_control_steps) {
+    return describe("duration_s", duration_s,
+                    "gives " + exact(std::ceil(duration_s / control_period_s)) +
+                        " control steps with control_period_s = " + exact(control_period_s) +
+                        "; at most " + exact(max_control_steps) + " are allowed");
+  }
+  if (duration_s / substep_s > max_substeps) {
+    return describe("duration_s", duration_s,
+                    "gives " + exact(std::ceil(duration_s / substep_s)) +
+                        " plant sub-steps with substep_s = " + exact(substep_s) + "; at most " +
+                        exact(max_substeps) + " are allowed");
   }
   if (!std::isfinite(stop_beyond_path_end_m)) {
     return describe("stop_beyond_path_end_m", stop_beyond_path_end_m, "must be finite");
@@ -89,9 +117,24 @@ void SimulationParameters::validate() const {
 }
 
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator_parameters, const SpeedProfile& speed,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
                           SteeringController& controller) {
+  std::vector<TraceSample> trace;
+  trace.reserve(static_cast<std::size_t>(
+      std::min(std::ceil(parameters.duration_s / parameters.control_period_s) + 1.0,
+               SimulationParameters::max_control_steps + 1.0)));
+  SimulationResult result =
+      simulate(path, vehicle, actuator, speed, parameters, start, controller,
+               [&trace](const TraceSample& sample) { trace.push_back(sample); });
+  result.trace = std::move(trace);
+  return result;
+}
+
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator_parameters, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer) {
   parameters.validate();
   if (const std::string error = speed.validation_error(); !error.empty()) {
     throw std::invalid_argument(error);
@@ -106,7 +149,6 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
       static_cast<long>(std::ceil(parameters.duration_s / parameters.control_period_s - 1e-9));
 
   SimulationResult result;
-  result.trace.reserve(static_cast<std::size_t>(steps) + 1);
   VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
   vehicle.constrain(state, 0.0);
   controller.reset(0.0);
@@ -184,7 +226,12 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     sample.side_slip_rad = side_slip_angle(state);
     sample.lateral_velocity_mps = state.vy_mps;
     sample.yaw_rate_radps = state.yaw_rate_radps;
-    result.trace.push_back(sample);
+    if (!all_finite(sample)) {
+      result.non_finite = true;
+      result.stop_reason = "non_finite";
+      break;
+    }
+    observer(sample);
 
     if (parameters.stop_at_path_end && !path.is_closed() &&
         rear_projection.arc_length_m > path.length() + parameters.stop_beyond_path_end_m) {

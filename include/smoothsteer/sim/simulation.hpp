@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,11 @@ struct SimulationParameters {
   double position_noise_std_m = 0.0;   //!< std of Gaussian noise on x and y of the rear axle [m]
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
+
+  //! Caps on what the input controls (issue 12, defect 3): control steps of one run
+  //! (duration_s / control_period_s) and plant sub-steps (duration_s / substep_s).
+  static constexpr double max_control_steps = 1e7;
+  static constexpr double max_substeps = 1e8;
 
   //! Empty when valid, else a message naming the field, value and rule.
   std::string validation_error() const;
@@ -80,15 +86,27 @@ struct SimulationResult {
   Status status = Status::ok;  //!< first non-ok controller status (the run stops there)
   std::vector<TraceSample> trace;
   VehicleState final_state;
-  bool non_finite = false;  //!< a NaN/inf appeared in the plant state (the run stops there)
+  //! A NaN/inf appeared in the plant state or in a sample (the run stops before emitting it).
+  bool non_finite = false;
   std::string stop_reason;  //!< "duration", "path_end", "controller_error" or "non_finite"
 };
 
+//! Receives every trace sample as it is produced (e.g. a CSV writer and a metrics accumulator).
+using TraceObserver = std::function<void(const TraceSample&)>;
+
 //! Runs the closed loop from the rear-axle pose `start` (vehicle driving straight at the
-//! profile's initial speed, actuator settled at 0). The controller is reset first.
+//! profile's initial speed, actuator settled at 0). The controller is reset first. A sample
+//! with a non-finite value is never emitted: the run stops before it with stop_reason
+//! "non_finite" (issue 12, defect 2).
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
                           SteeringController& controller);
+//! The same, streaming: every sample goes to `observer` and result.trace stays empty, so
+//! memory does not grow with the duration.
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer);
 
 }  // namespace smoothsteer
