@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev coinor-libipopt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy python3-matplotlib
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

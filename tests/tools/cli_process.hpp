@@ -4,6 +4,7 @@
 //! their exit status, stdout and stderr.
 
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -63,9 +64,12 @@ inline pid_t start_process(const std::vector<std::string>& arguments,
   return child;
 }
 
-inline int wait_process(pid_t child) {
+//! Waits for `child`; its peak resident set size [kB] goes to `peak_rss_kb` if given.
+inline int wait_process(pid_t child, long* peak_rss_kb = nullptr) {
   int status = 0;
-  if (child < 0 || waitpid(child, &status, 0) < 0) return -1;
+  struct rusage usage {};
+  if (child < 0 || wait4(child, &status, 0, &usage) < 0) return -1;
+  if (peak_rss_kb) *peak_rss_kb = usage.ru_maxrss;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
