@@ -51,6 +51,7 @@ nlohmann::json summary_json(const Scenario& scenario, const RunResult& result) {
   summary["vehicle_source"] = scenario.vehicle_source;
   summary["status"] = to_string(result.simulation.status);
   summary["stop_reason"] = result.simulation.stop_reason;
+  summary["model_evaluations"] = result.simulation.model_evaluations;
   summary["overrides"] = scenario.overrides;
   nlohmann::json metrics = nlohmann::json::object();
   for (const auto& [name, value] : metric_values(result.metrics)) {

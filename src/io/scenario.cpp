@@ -165,6 +165,13 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   p.control_period_s = sim.number("control_period_s", p.control_period_s, {0.0, 1.0, true, false});
   p.substep_s = sim.number("substep_s", p.substep_s, {0.0, 0.01, true, false});
   p.duration_s = sim.number("duration_s", p.duration_s, {0.0, 3600.0, true, false});
+  const std::string integrator =
+      sim.text("integrator", "fixed_rk4", {"fixed_rk4", "rkf78", "dopri5"});
+  p.integrator = integrator == "fixed_rk4" ? PlantIntegrator::fixed_rk4
+                 : integrator == "dopri5"  ? PlantIntegrator::dopri5
+                                           : PlantIntegrator::rkf78;
+  p.integrator_tolerance =
+      sim.number("integrator_tolerance", p.integrator_tolerance, {1e-14, 1e-3});
   p.stop_at_path_end = sim.boolean("stop_at_path_end", p.stop_at_path_end);
   p.stop_beyond_path_end_m = sim.number("stop_beyond_path_end_m", p.stop_beyond_path_end_m);
   p.matched_disturbance = sim.number("matched_disturbance", 0.0, {-1.0, 1.0});

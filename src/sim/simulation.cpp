@@ -6,6 +6,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "plant_integration.hpp"
 #include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
@@ -20,37 +21,6 @@ std::string exact(double value) {
 
 std::string describe(const char* field, double value, const std::string& rule) {
   return std::string("SimulationParameters: ") + field + " = " + exact(value) + " " + rule;
-}
-
-using PlantArray = std::array<double, VehicleState::size>;
-
-PlantArray to_array(const VehicleState& d) {
-  return d.to_array();
-}
-
-//! Classic RK4 over one sub-step; the steering angle is interpolated linearly between the
-//! actuator output at the start and at the end of the sub-step.
-VehicleState rk4_step(const VehicleModel& model, const VehicleState& state, double h,
-                      double delta_start, double delta_end, double acceleration) noexcept {
-  const PlantArray x = state.to_array();
-  auto eval = [&](const PlantArray& y, double fraction) {
-    const double delta = delta_start + fraction * (delta_end - delta_start);
-    return to_array(model.derivative(VehicleState::from_array(y), delta, acceleration));
-  };
-  auto shifted = [&](const PlantArray& k, double scale) {
-    PlantArray y = x;
-    for (std::size_t i = 0; i < y.size(); ++i) y[i] += scale * k[i];
-    return y;
-  };
-  const PlantArray k1 = eval(x, 0.0);
-  const PlantArray k2 = eval(shifted(k1, 0.5 * h), 0.5);
-  const PlantArray k3 = eval(shifted(k2, 0.5 * h), 0.5);
-  const PlantArray k4 = eval(shifted(k3, h), 1.0);
-  PlantArray next = x;
-  for (std::size_t i = 0; i < next.size(); ++i) {
-    next[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-  }
-  return VehicleState::from_array(next);
 }
 
 bool finite(const VehicleState& s) {
@@ -95,6 +65,9 @@ std::string SimulationParameters::validation_error() const {
                     "gives " + exact(std::ceil(duration_s / substep_s)) +
                         " plant sub-steps with substep_s = " + exact(substep_s) + "; at most " +
                         exact(max_substeps) + " are allowed");
+  }
+  if (!(integrator_tolerance >= 1e-14 && integrator_tolerance <= 1e-3)) {
+    return describe("integrator_tolerance", integrator_tolerance, "must be in [1e-14, 1e-3]");
   }
   if (!std::isfinite(stop_beyond_path_end_m)) {
     return describe("stop_beyond_path_end_m", stop_beyond_path_end_m, "must be finite");
@@ -144,11 +117,11 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   actuator.reset(0.0);
   const int substeps =
       static_cast<int>(std::lround(parameters.control_period_s / parameters.substep_s));
-  const double h = parameters.substep_s;
   const long steps =
       static_cast<long>(std::ceil(parameters.duration_s / parameters.control_period_s - 1e-9));
 
   SimulationResult result;
+  std::vector<double> input_buffer(static_cast<std::size_t>(substeps));
   VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
   vehicle.constrain(state, 0.0);
   controller.reset(0.0);
@@ -157,11 +130,16 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
       controller.set_matched_disturbance(parameters.matched_disturbance)
           ? 0.0
           : parameters.matched_disturbance;
-  const double wheelbase = car.wheelbase_m();
-  auto effective = [&](double delta) {
-    return plant_disturbance == 0.0 ? delta
-                                    : std::atan(std::tan(delta) + wheelbase * plant_disturbance);
-  };
+  const detail::PlantContext plant{vehicle,
+                                   speed,
+                                   actuator,
+                                   plant_disturbance,
+                                   parameters.substep_s,
+                                   substeps,
+                                   parameters.integrator,
+                                   parameters.integrator_tolerance,
+                                   &result.model_evaluations,
+                                   input_buffer.data()};
 
   std::mt19937_64 engine(parameters.noise_seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);
@@ -239,28 +217,8 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
       break;
     }
     if (k == steps) break;
-    // Zero-order hold of the command over the control period; the plant runs at the sub-step.
-    for (int j = 0; j < substeps; ++j) {
-      const double time = t + j * h;
-      delayed_input = actuator.push_command(command);
-      const double delta_start = effective(actuator.angle());
-      if (actuator.parameters().ideal) {
-        actuator.set_state({delayed_input, delayed_input, delayed_input});
-      } else {
-        actuator.advance(delayed_input);
-      }
-      const double delta_end = effective(actuator.angle());
-      const double acceleration = speed.acceleration(time + 0.5 * h);
-      const VehicleState before = state;
-      state = rk4_step(vehicle, state, h, actuator.parameters().ideal ? delta_end : delta_start,
-                       delta_end, acceleration);
-      vehicle.constrain(state, delta_end);
-      const double rear_vy_before = before.vy_mps - car.cg_to_rear_axle_m * before.yaw_rate_radps;
-      const double rear_vy_after = state.vy_mps - car.cg_to_rear_axle_m * state.yaw_rate_radps;
-      distance +=
-          0.5 * h *
-          (std::hypot(before.vx_mps, rear_vy_before) + std::hypot(state.vx_mps, rear_vy_after));
-    }
+    // Zero-order hold of the command over the control period (src/sim/plant_integration.hpp).
+    delayed_input = detail::advance_plant(plant, t, command, state, distance);
     if (!finite(state)) {
       result.non_finite = true;
       result.stop_reason = "non_finite";

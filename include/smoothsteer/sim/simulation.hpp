@@ -20,10 +20,24 @@
 
 namespace smoothsteer {
 
+//! How the plant is integrated between control instants (docs/simulation.md).
+enum class PlantIntegrator {
+  //! RK4 of vehicle and actuator at the fixed sub-step (the reference method).
+  fixed_rk4,
+  //! Exact actuator lags + Runge-Kutta-Fehlberg 7(8) with error control, restarted at every
+  //! control instant; fixed_rk4 for a period in which the actuator saturates.
+  rkf78,
+  //! The same with Dormand-Prince 5(4) (more model evaluations at equal accuracy here).
+  dopri5,
+};
+
 struct SimulationParameters {
   double control_period_s = 0.02;  //!< controller period (50 Hz) [s]; a multiple of substep_s
-  double substep_s = 0.001;        //!< RK4 step of the plant [s]
-  double duration_s = 60.0;        //!< longest simulated time [s]
+  double substep_s = 0.001;        //!< RK4 step of the plant; delay-line resolution [s]
+  PlantIntegrator integrator = PlantIntegrator::fixed_rk4;
+  //! Absolute local error tolerance of rkf78 / dopri5 (per state component, m, rad, m/s).
+  double integrator_tolerance = 1e-8;
+  double duration_s = 60.0;  //!< longest simulated time [s]
   //! Stop once the rear axle's closest point is this far beyond the end of an open path [m]
   //! (negative: before the end). Ignored for closed paths.
   double stop_beyond_path_end_m = 0.0;
@@ -89,6 +103,7 @@ struct SimulationResult {
   //! A NaN/inf appeared in the plant state or in a sample (the run stops before emitting it).
   bool non_finite = false;
   std::string stop_reason;  //!< "duration", "path_end", "controller_error" or "non_finite"
+  std::uint64_t model_evaluations = 0;  //!< calls of VehicleModel::derivative (cost measure)
 };
 
 //! Receives every trace sample as it is produced (e.g. a CSV writer and a metrics accumulator).
