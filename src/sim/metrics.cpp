@@ -19,28 +19,35 @@ int count_non_finite(const TraceSample& s) {
 
 }  // namespace
 
-std::string MetricsParameters::validation_error() const {
+std::optional<Violation> MetricsParameters::first_violation() const noexcept {
+  auto bad = [](const char* field, double value, const char* rule) {
+    return Violation{"MetricsParameters", "", field, value, rule};
+  };
   if (!std::isfinite(reaching_threshold_m) || reaching_threshold_m <= 0.0) {
-    return "MetricsParameters: reaching_threshold_m = " + std::to_string(reaching_threshold_m) +
-           " must be finite and > 0";
+    return bad("reaching_threshold_m", reaching_threshold_m, "must be finite and > 0");
   }
   if (!(steering_angle_limit_rad > 0.0)) {
-    return "MetricsParameters: steering_angle_limit_rad = " +
-           std::to_string(steering_angle_limit_rad) + " must be > 0";
+    return bad("steering_angle_limit_rad", steering_angle_limit_rad, "must be > 0");
   }
   if (!(steering_rate_limit_radps > 0.0)) {
-    return "MetricsParameters: steering_rate_limit_radps = " +
-           std::to_string(steering_rate_limit_radps) + " must be > 0";
+    return bad("steering_rate_limit_radps", steering_rate_limit_radps, "must be > 0");
   }
   if (!(steering_acceleration_limit_radps2 > 0.0)) {
-    return "MetricsParameters: steering_acceleration_limit_radps2 = " +
-           std::to_string(steering_acceleration_limit_radps2) + " must be > 0";
+    return bad("steering_acceleration_limit_radps2", steering_acceleration_limit_radps2,
+               "must be > 0");
   }
   if (!std::isfinite(violation_tolerance) || violation_tolerance < 0.0) {
-    return "MetricsParameters: violation_tolerance = " + std::to_string(violation_tolerance) +
-           " must be finite and >= 0";
+    return bad("violation_tolerance", violation_tolerance, "must be finite and >= 0");
   }
-  return {};
+  return std::nullopt;
+}
+
+std::string MetricsParameters::validation_error() const {
+  return describe(first_violation());
+}
+
+void MetricsParameters::validate() const {
+  throw_if_violated(first_violation());
 }
 
 void MetricsAccumulator::Spread::add(double x) {  // Welford

@@ -12,17 +12,6 @@
 namespace smoothsteer {
 namespace {
 
-//! Shortest text that reads back as exactly `value` (0.0200001 stays 0.0200001).
-std::string exact(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
-
-std::string describe(const char* field, double value, const std::string& rule) {
-  return std::string("SimulationParameters: ") + field + " = " + exact(value) + " " + rule;
-}
-
 bool finite(const VehicleState& s) {
   for (double v : s.to_array()) {
     if (!std::isfinite(v)) return false;
@@ -39,54 +28,58 @@ bool all_finite(const TraceSample& sample) {
 
 }  // namespace
 
-std::string SimulationParameters::validation_error() const {
+std::optional<Violation> SimulationParameters::first_violation() const noexcept {
+  auto bad = [](const char* field, double value, const char* rule,
+                double reference = std::numeric_limits<double>::quiet_NaN()) {
+    return Violation{"SimulationParameters", "", field, value, rule, reference};
+  };
   if (!std::isfinite(substep_s) || substep_s <= 0.0 || substep_s > 0.01) {
-    return describe("substep_s", substep_s, "must be in (0, 0.01]");
+    return bad("substep_s", substep_s, "must be in (0, 0.01]");
   }
   if (!std::isfinite(control_period_s) || control_period_s < substep_s || control_period_s > 1.0) {
-    return describe("control_period_s", control_period_s, "must be in [substep_s, 1]");
+    return bad("control_period_s", control_period_s, "must be in [substep_s, 1]");
   }
   const double ratio = control_period_s / substep_s;
   if (std::abs(ratio - std::round(ratio)) > 1e-6) {
-    return describe("control_period_s", control_period_s,
-                    "must be a whole multiple of substep_s = " + exact(substep_s));
+    return bad("control_period_s", control_period_s,
+               "must be a whole multiple of substep_s =", substep_s);
   }
   if (!std::isfinite(duration_s) || duration_s <= 0.0 || duration_s > 3600.0) {
-    return describe("duration_s", duration_s, "must be in (0, 3600]");
+    return bad("duration_s", duration_s, "must be in (0, 3600]");
   }
   if (duration_s / control_period_s > max_control_steps) {
-    return describe("duration_s", duration_s,
-                    "gives " + exact(std::ceil(duration_s / control_period_s)) +
-                        " control steps with control_period_s = " + exact(control_period_s) +
-                        "; at most " + exact(max_control_steps) + " are allowed");
+    return bad("duration_s", duration_s,
+               "gives more control steps (duration_s / control_period_s) than allowed:",
+               max_control_steps);
   }
   if (duration_s / substep_s > max_substeps) {
-    return describe("duration_s", duration_s,
-                    "gives " + exact(std::ceil(duration_s / substep_s)) +
-                        " plant sub-steps with substep_s = " + exact(substep_s) + "; at most " +
-                        exact(max_substeps) + " are allowed");
+    return bad("duration_s", duration_s,
+               "gives more plant sub-steps (duration_s / substep_s) than allowed:", max_substeps);
   }
   if (!(integrator_tolerance >= 1e-14 && integrator_tolerance <= 1e-3)) {
-    return describe("integrator_tolerance", integrator_tolerance, "must be in [1e-14, 1e-3]");
+    return bad("integrator_tolerance", integrator_tolerance, "must be in [1e-14, 1e-3]");
   }
   if (!std::isfinite(stop_beyond_path_end_m)) {
-    return describe("stop_beyond_path_end_m", stop_beyond_path_end_m, "must be finite");
+    return bad("stop_beyond_path_end_m", stop_beyond_path_end_m, "must be finite");
   }
   if (!std::isfinite(matched_disturbance) || std::abs(matched_disturbance) > 1.0) {
-    return describe("matched_disturbance", matched_disturbance, "must be in [-1, 1] 1/m");
+    return bad("matched_disturbance", matched_disturbance, "must be in [-1, 1] 1/m");
   }
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
-    return describe("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
+    return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
   }
   if (!std::isfinite(heading_noise_std_rad) || heading_noise_std_rad < 0.0) {
-    return describe("heading_noise_std_rad", heading_noise_std_rad, "must be finite and >= 0");
+    return bad("heading_noise_std_rad", heading_noise_std_rad, "must be finite and >= 0");
   }
-  return {};
+  return std::nullopt;
+}
+
+std::string SimulationParameters::validation_error() const {
+  return describe(first_violation());
 }
 
 void SimulationParameters::validate() const {
-  const std::string error = validation_error();
-  if (!error.empty()) throw std::invalid_argument(error);
+  throw_if_violated(first_violation());
 }
 
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
@@ -109,9 +102,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const SimulationParameters& parameters, const Pose2& start,
                           SteeringController& controller, const TraceObserver& observer) {
   parameters.validate();
-  if (const std::string error = speed.validation_error(); !error.empty()) {
-    throw std::invalid_argument(error);
-  }
+  speed.validate();
   const VehicleParameters& car = vehicle.parameters();
   SteeringActuator actuator(actuator_parameters, parameters.substep_s);
   actuator.reset(0.0);

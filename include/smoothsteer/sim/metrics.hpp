@@ -4,6 +4,7 @@
 //! down in docs/metrics.md; metric_values() lists them under their documented names.
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,7 +24,11 @@ struct MetricsParameters {
   //! Relative tolerance of the bound checks (a command exactly at the bound is no violation).
   double violation_tolerance = 1e-6;
 
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
   std::string validation_error() const;
+  void validate() const;  //!< throws std::invalid_argument
 };
 
 struct Metrics {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,9 @@ struct SimulationParameters {
   static constexpr double max_control_steps = 1e7;
   static constexpr double max_substeps = 1e8;
 
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
   //! Empty when valid, else a message naming the field, value and rule.
   std::string validation_error() const;
   void validate() const;  //!< throws std::invalid_argument
