@@ -18,7 +18,7 @@ Vec2 point(ConfigSection& c, const std::string& key, Vec2 fallback) {
   return {xy[0], xy[1]};
 }
 
-//! Falcone et al. 2007 double lane change (paper-notes §8): Y(X) with the published constants.
+//! Falcone et al. 2007 double lane change (paper_notes §8): Y(X) with the published constants.
 double lane_change_y(double x) {
   const double shape = 2.4, dx1 = 25.0, dx2 = 21.95, dy1 = 4.05, dy2 = 5.7;
   const double xs1 = 27.19, xs2 = 56.46;

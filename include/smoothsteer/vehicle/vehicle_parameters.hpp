@@ -1,7 +1,7 @@
 #pragma once
 //! \file vehicle_parameters.hpp
 //! Parameters of the single-track vehicle models (kinematic and kinetic) and of the Pacejka
-//! Magic Formula lateral tire (paper-notes §9; Rajamani, Vehicle Dynamics and Control, ch. 2, 13).
+//! Magic Formula lateral tire (paper_notes §9; Rajamani, Vehicle Dynamics and Control, ch. 2, 13).
 //! Defaults: CommonRoad vehicle models, "vehicle 2" (BMW 320i), see vehicles/passenger_car.yaml.
 
 #include <limits>
