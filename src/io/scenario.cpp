@@ -273,12 +273,7 @@ nlohmann::json to_json(const YAML::Node& node) {
       YAML::convert<bool>::decode(node, flag);
       return flag;
     }
-    try {
-      std::size_t used = 0;
-      const double number = std::stod(text, &used);
-      if (used == text.size()) return number;
-    } catch (const std::exception&) {
-    }
+    if (const std::optional<double> number = parse_number(text)) return *number;
   }
   return text;
 }
