@@ -8,8 +8,10 @@
 #include "odeint.hpp"
 
 // Boost.Odeint copies default-constructed temporaries of its steppers (GCC 12 false positive).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 namespace smoothsteer::detail {
 namespace {
