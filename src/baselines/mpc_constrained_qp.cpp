@@ -16,10 +16,7 @@ struct MpcConstrainedQp::Alglib {
 
 MpcConstrainedQp::MpcConstrainedQp(int horizon_steps, const SteeringLimits& limits,
                                    double prediction_step_s)
-    : alglib_(std::make_unique<Alglib>()),
-      horizon_(horizon_steps),
-      limits_(limits),
-      prediction_step_s_(prediction_step_s) {
+    : alglib_(std::make_unique<Alglib>()), horizon_(horizon_steps), limits_(limits) {
   const alglib::ae_int_t n = horizon_steps;
   Alglib& qp = *alglib_;
   alglib::minqpcreate(n, qp.state);

@@ -31,7 +31,6 @@ class MpcConstrainedQp {
   std::unique_ptr<Alglib> alglib_;
   int horizon_;
   SteeringLimits limits_;
-  double prediction_step_s_;
 };
 
 }  // namespace smoothsteer::detail
