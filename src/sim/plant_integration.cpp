@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#if SMOOTHSTEER_HAS_ODEINT
 #include "odeint.hpp"
+#endif
 
 // Boost.Odeint copies default-constructed temporaries of its steppers (GCC 12 false positive).
 #if defined(__GNUC__) && !defined(__clang__)
@@ -130,7 +132,9 @@ using AdaptiveState = std::array<double, VehicleState::size + 1>;  // vehicle + 
 template <typename DeltaOf>
 void solve_piece(const PlantContext& c, double origin, double from, double to,
                  const DeltaOf& delta_of, VehicleState& state, double& distance) noexcept {
+#if SMOOTHSTEER_HAS_ODEINT
   namespace odeint = boost::numeric::odeint;
+#endif
   const double lr = c.model.parameters().cg_to_rear_axle_m;
   const double acceleration = c.speed.acceleration(0.5 * (from + to));
   auto system = [&](const AdaptiveState& y, AdaptiveState& dydt, double t) {
@@ -146,6 +150,22 @@ void solve_piece(const PlantContext& c, double origin, double from, double to,
   const PlantArray x = state.to_array();
   std::copy(x.begin(), x.end(), y.begin());
   y.back() = distance;
+#if !SMOOTHSTEER_HAS_ODEINT
+  // Built without Boost: SimulationParameters rejects rkf78 / dopri5, so this is unreachable;
+  // classic RK4 over the piece keeps it well defined.
+  const double h = to - from;
+  AdaptiveState k1, k2, k3, k4, tmp;
+  auto shifted = [&](const AdaptiveState& k, double scale) {
+    for (std::size_t i = 0; i < y.size(); ++i) tmp[i] = y[i] + scale * k[i];
+    return tmp;
+  };
+  system(y, k1, from);
+  system(shifted(k1, 0.5 * h), k2, from + 0.5 * h);
+  system(shifted(k2, 0.5 * h), k3, from + 0.5 * h);
+  system(shifted(k3, h), k4, to);
+  for (std::size_t i = 0; i < y.size(); ++i)
+    y[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+#else
   if (c.integrator == PlantIntegrator::dopri5) {
     auto stepper =
         odeint::make_controlled(c.tolerance, 0.0, odeint::runge_kutta_dopri5<AdaptiveState>());
@@ -155,6 +175,7 @@ void solve_piece(const PlantContext& c, double origin, double from, double to,
         odeint::make_controlled(c.tolerance, 0.0, odeint::runge_kutta_fehlberg78<AdaptiveState>());
     odeint::integrate_adaptive(stepper, system, y, from, to, to - from);
   }
+#endif
   PlantArray next;
   std::copy_n(y.begin(), next.size(), next.begin());
   state = VehicleState::from_array(next);

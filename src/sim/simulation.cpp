@@ -56,6 +56,12 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
     return bad("duration_s", duration_s,
                "gives more plant sub-steps (duration_s / substep_s) than allowed:", max_substeps);
   }
+#if !SMOOTHSTEER_HAS_ODEINT
+  if (integrator != PlantIntegrator::fixed_rk4) {
+    return bad("integrator", static_cast<double>(integrator),
+               "needs Boost.Odeint, absent from this build: only fixed_rk4 (0) is available");
+  }
+#endif
   if (!(integrator_tolerance >= 1e-14 && integrator_tolerance <= 1e-3)) {
     return bad("integrator_tolerance", integrator_tolerance, "must be in [1e-14, 1e-3]");
   }

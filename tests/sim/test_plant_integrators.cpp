@@ -49,6 +49,9 @@ SimulationResult run(PlantIntegrator integrator, double dead_time_s, double subs
 }
 
 TEST(PlantIntegrators, AdaptiveMatchesFineRk4WithFewerEvaluations) {
+  SimulationParameters adaptive;
+  adaptive.integrator = PlantIntegrator::rkf78;
+  if (!adaptive.is_valid()) GTEST_SKIP() << adaptive.validation_error();
   for (double dead_time : {0.0, 0.01, 0.03}) {
     const SimulationResult fine = run(PlantIntegrator::fixed_rk4, dead_time, 0.0001);
     const SimulationResult reference = run(PlantIntegrator::fixed_rk4, dead_time, 0.001);
