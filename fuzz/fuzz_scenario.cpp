@@ -1,6 +1,6 @@
 // libFuzzer target: the scenario loader (YAML text -> validated Scenario, path and controller).
 #include "fuzz_support.hpp"
-#include "smoothsteer/baselines/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/controller_registration.hpp"
 #include "smoothsteer/io/scenario.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

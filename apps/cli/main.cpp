@@ -7,7 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "smoothsteer/baselines/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/controller_registration.hpp"
 #include "smoothsteer/io/run_output.hpp"
 
 int main(int argc, char** argv) {
