@@ -3,9 +3,11 @@
 #   1. the formatting of every C++ file against .clang-format,
 #   2. the full suite (ci preset: Release, -Werror),
 #   3. a consumer project built against the installed package (find_package(smoothsteer)),
-#   4. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer (asan preset).
+#   4. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow
+#      included (asan preset, clang-14),
+#   5. every libFuzzer target for a bounded time from the seed corpus (scripts/fuzz.sh).
 # SMOOTHSTEER_PROPERTY_CASES sets the number of randomized cases per property (default 40; CI
-# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips step 4.
+# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips steps 4 and 5.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -32,4 +34,5 @@ if [[ "${SMOOTHSTEER_SKIP_ASAN:-0}" != "1" ]]; then
   # The sanitizers run the suite at the default case count: they look for memory errors and
   # undefined behaviour, not for rare inputs.
   SMOOTHSTEER_PROPERTY_CASES= ctest --preset asan -j"$jobs"
+  bash scripts/fuzz.sh
 fi

@@ -1,27 +1,37 @@
-// `smoothsteer compare <benchmark>`: runs one comparison benchmark (issue "Comparison") and
-// writes its table as CSV and Markdown into the output directory (default docs/results).
+// `smoothsteer compare <benchmark>`: runs one comparison benchmark (issue 9) and writes its
+// table as CSV and Markdown into --out (default compare_out/, untracked). The committed tables
+// in docs/results/ come from `--out docs/results` (docs/results/README.md); they are the same on
+// every rerun, since wall-clock times go to a separate *_timings file, which is not committed.
 //   roc           Tab. roc_vx: optimal (Ipopt) vs proposed (n = 1) vs HOSM reaching distance
 //   lane-change   every controller on scenarios/lane_change_{10,15,19}.yaml
 //   parameters    circle_sections.yaml with the four settings of Sec. IV-A
+//   tuning        every controller tuned by one rule on training scenarios, reported held-out
+// Options of `compare` work before or after the sub-command (`compare parameters -o DIR`).
 
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
-#include "smoothsteer/baselines/reaching_benchmark.hpp"
-#include "smoothsteer/baselines/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/paper_figures.hpp"
+#include "smoothsteer/evaluation/reaching_benchmark.hpp"
+#include "smoothsteer/evaluation/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/tuning_rule.hpp"
 
 namespace smoothsteer::cli {
 
 namespace {
 
 struct CompareOptions {
-  std::string output_directory = "docs/results";
+  std::string output_directory = "compare_out";
   std::string scenario_directory = "scenarios";
+  std::string paper_figures_file = "data/paper_figures.csv";
   double lateral_tolerance_m = 0.01;
   double heading_tolerance_rad = 0.01;
   int intervals = 150;
+  int budget = 16;
+  std::vector<std::string> training{"lane_change_10", "lane_change_19"};
+  std::vector<std::string> held_out{"lane_change_15", "circle_sections"};
 };
 
 void emit(const ResultsTable& table, const CompareOptions& options, const std::string& stem) {
@@ -30,15 +40,35 @@ void emit(const ResultsTable& table, const CompareOptions& options, const std::s
               options.output_directory.c_str(), stem.c_str());
 }
 
+std::vector<io::Scenario> load_scenarios(const CompareOptions& options,
+                                         const std::vector<std::string>& names) {
+  std::vector<io::Scenario> scenarios;
+  for (const std::string& name : names) {
+    scenarios.push_back(io::load_scenario(options.scenario_directory + "/" + name + ".yaml"));
+  }
+  return scenarios;
+}
+
+PaperFigures paper_figures(const CompareOptions& options) {
+  return options.paper_figures_file.empty() ? PaperFigures{}
+                                            : PaperFigures::load(options.paper_figures_file);
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
   auto options = std::make_shared<CompareOptions>();
   CLI::App* compare = app.add_subcommand("compare", "run a comparison benchmark, write its table");
   compare->require_subcommand(1);
-  compare->add_option("-o,--output", options->output_directory, "directory of the tables")
+  // Sub-commands pass options they do not know to `compare`, so -o works after them too.
+  compare->fallthrough();
+  compare->add_option("-o,--out,--output", options->output_directory, "directory of the tables")
       ->capture_default_str();
   compare->add_option("--scenarios", options->scenario_directory, "directory of scenario files")
+      ->capture_default_str();
+  compare
+      ->add_option("--paper-figures", options->paper_figures_file,
+                   "the paper's published figures (CSV); empty: none")
       ->capture_default_str();
 
   CLI::App* roc = compare->add_subcommand("roc", "Tab. roc_vx: reaching distance vs the optimum");
@@ -54,17 +84,18 @@ void add_compare_command(CLI::App& app) {
     benchmark.lateral_tolerance_m = options->lateral_tolerance_m;
     benchmark.heading_tolerance_rad = options->heading_tolerance_rad;
     benchmark.intervals = options->intervals;
-    emit(run_reaching_benchmark(benchmark).table(), *options, "roc_vx");
+    const ReachingBenchmarkResult result = run_reaching_benchmark(benchmark);
+    emit(result.table(paper_figures(*options)), *options, "roc_vx");
+    emit(result.timings_table(), *options, "roc_vx_timings");
   });
 
-#ifdef SMOOTHSTEER_HAS_io
   CLI::App* lane = compare->add_subcommand("lane-change", "every controller on the lane change");
   lane->callback([options] {
     std::vector<std::string> files;
     for (const char* speed : {"10", "15", "19"}) {
       files.push_back(options->scenario_directory + "/lane_change_" + speed + ".yaml");
     }
-    emit(run_lane_change_comparison(files), *options, "lane_change");
+    emit(run_lane_change_comparison(files, paper_figures(*options)), *options, "lane_change");
   });
   CLI::App* parameters =
       compare->add_subcommand("parameters", "circle_sections with the settings of Sec. IV-A");
@@ -72,7 +103,22 @@ void add_compare_command(CLI::App& app) {
     emit(run_parameter_comparison(options->scenario_directory + "/circle_sections.yaml"), *options,
          "parameter_radar");
   });
-#endif
+  CLI::App* tuning = compare->add_subcommand(
+      "tuning", "every controller tuned by one rule, reported on held-out scenarios");
+  tuning->add_option("--budget", options->budget, "configurations per controller (power of 2)")
+      ->capture_default_str();
+  tuning->add_option("--train", options->training, "scenario names the gains are chosen on")
+      ->capture_default_str();
+  tuning->add_option("--held-out", options->held_out, "scenario names the table reports")
+      ->capture_default_str();
+  tuning->callback([options] {
+    TuningRuleOptions rule;
+    rule.budget = options->budget;
+    emit(run_tuning_rule(load_scenarios(*options, options->training),
+                         load_scenarios(*options, options->held_out), rule)
+             .table(),
+         *options, "tuning_rule");
+  });
 }
 
 }  // namespace smoothsteer::cli

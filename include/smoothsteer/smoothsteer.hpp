@@ -8,6 +8,7 @@
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/controller/trailer_chain.hpp"
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/math/pose2.hpp"
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/path/path_builder.hpp"

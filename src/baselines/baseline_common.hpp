@@ -1,49 +1,34 @@
 #pragma once
-// Shared helpers of the comparison controllers (internal).
+// The one helper of the comparison controllers (internal): parameter checks
+// (parameter_checks.hpp), input validation, reset, rear-axle tracking and filling the output.
 
+#include <algorithm>
 #include <cmath>
-#include <sstream>
-#include <stdexcept>
-#include <string>
 
+#include "smoothsteer/baselines/parameter_checks.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path.hpp"
 
 namespace smoothsteer::detail {
 
-//! Throws std::invalid_argument "<owner>: <field> = <value> <rule>" unless `ok`.
-inline void require(bool ok, const char* owner, const char* field, double value,
-                    const std::string& rule) {
-  if (ok) return;
-  std::ostringstream message;
-  message.precision(10);
-  message << owner << ": " << field << " = " << value << " " << rule;
-  throw std::invalid_argument(message.str());
-}
-
-inline bool positive_finite(double value) {
-  return std::isfinite(value) && value > 0.0;
-}
-
-//! The parameters of the extended system x_ext (eq. x_ext) with C1 and C2, shared by HOSM and the
-//! optimal reaching problem: lambda > 0, delta-bar in (0, pi/2), delta-bar' > 0.
-inline void require_x_ext_limits(const char* owner, double wheelbase_m,
-                                 double steering_angle_bound_rad,
-                                 double steering_rate_bound_per_m) {
-  require(positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-          "must be finite and > 0");
-  require(positive_finite(steering_angle_bound_rad) && steering_angle_bound_rad < pi / 2.0, owner,
-          "steering_angle_bound_rad", steering_angle_bound_rad, "must be in (0, pi/2)");
-  require(positive_finite(steering_rate_bound_per_m), owner, "steering_rate_bound_per_m",
-          steering_rate_bound_per_m, "must be finite and > 0");
-}
-
 inline bool valid_input(const ControllerInput& input) noexcept {
   return std::isfinite(input.rear_axle_position.x) && std::isfinite(input.rear_axle_position.y) &&
          std::isfinite(input.heading_rad) && std::isfinite(input.speed_mps) &&
          std::isfinite(input.acceleration_mps2) && std::isfinite(input.period_s) &&
          input.period_s > 0.0;
+}
+
+//! Restarts a controller from the measured steering angle (clamped to +-bound, 0 if not
+//! finite) with cold projection hints.
+inline void reset_tracking(double measured_steering_angle_rad, double& steering,
+                           ProjectionHint& rear_hint, ProjectionHint& front_hint,
+                           double bound = HUGE_VAL) noexcept {
+  steering = std::isfinite(measured_steering_angle_rad)
+                 ? std::clamp(measured_steering_angle_rad, -bound, bound)
+                 : 0.0;
+  rear_hint.reset();
+  front_hint.reset();
 }
 
 //! Rear-axle tracking state relative to the path, for forward driving.
@@ -77,6 +62,24 @@ inline void fill_diagnostics(const Path& path, ProjectionHint& front_hint,
   diagnostics.path_arc_length_m = rear.projection.arc_length_m;
   diagnostics.path_curvature = rear.projection.curvature;
   diagnostics.fictive_steering_angle_rad = steering_angle_rad;
+}
+
+//! Fills the output of a comparison controller: the command, its rate as the difference to
+//! `previous` over the period, `derivatives` and the acceleration where the controller has them,
+//! the sliding variable, the lead curvature tan(delta)/lambda and the diagnostics.
+inline void fill_output(const Path& path, ProjectionHint& front_hint, const ControllerInput& input,
+                        const RearTracking& rear, double vehicle_wheelbase_m,
+                        double steering_angle_rad, double previous_steering_angle_rad,
+                        double sliding_variable, ControllerOutput& output, int derivatives = 0,
+                        double steering_acceleration_radps2 = 0.0) noexcept {
+  output.steering_angle_rad = steering_angle_rad;
+  output.steering_rate_radps = (steering_angle_rad - previous_steering_angle_rad) / input.period_s;
+  output.steering_acceleration_radps2 = steering_acceleration_radps2;
+  output.derivatives_available = derivatives;
+  output.diagnostics.sliding_variable = sliding_variable;
+  output.diagnostics.lead_curvature = std::tan(steering_angle_rad) / vehicle_wheelbase_m;
+  fill_diagnostics(path, front_hint, input, rear, vehicle_wheelbase_m, steering_angle_rad,
+                   output.diagnostics);
 }
 
 }  // namespace smoothsteer::detail

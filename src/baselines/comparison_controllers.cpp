@@ -5,10 +5,7 @@
 #include <stdexcept>
 
 #include "baseline_common.hpp"
-#include "smoothsteer/baselines/geometric_controllers.hpp"
 #include "smoothsteer/baselines/hosm_controller.hpp"
-#include "smoothsteer/baselines/lqr_controller.hpp"
-#include "smoothsteer/baselines/newton_raphson_controller.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 
 namespace smoothsteer {
@@ -30,8 +27,8 @@ void ComparisonSetup::validate() const {
 
 const std::vector<std::string>& comparison_controller_names() {
   static const std::vector<std::string> names{
-      "dubins_smc",     "proposed_c0", "proposed_c1",  "hosm",
-      "newton_raphson", "stanley",     "pure_pursuit", "lqr"};
+      "dubins_smc", "proposed_c0",  "proposed_c1", "hosm", "newton_raphson",
+      "stanley",    "pure_pursuit", "lqr",         "mpc",  "mpc_constrained"};
   return names;
 }
 
@@ -100,25 +97,32 @@ std::unique_ptr<SteeringController> make_inner(std::string_view name,
     return std::make_unique<HosmController>(parameters, setup.path);
   }
   if (name == "newton_raphson") {
-    NewtonRaphsonParameters parameters;
+    NewtonRaphsonParameters parameters = setup.newton_raphson;
     parameters.wheelbase_m = lambda;
     parameters.limits = setup.limits;
     return std::make_unique<NewtonRaphsonController>(parameters, setup.path);
   }
   if (name == "stanley") {
-    StanleyParameters parameters;
+    StanleyParameters parameters = setup.stanley;
     parameters.wheelbase_m = lambda;
     return std::make_unique<StanleyController>(parameters, setup.path);
   }
   if (name == "pure_pursuit") {
-    PurePursuitParameters parameters;
+    PurePursuitParameters parameters = setup.pure_pursuit;
     parameters.wheelbase_m = lambda;
     return std::make_unique<PurePursuitController>(parameters, setup.path);
   }
   if (name == "lqr") {
-    LqrParameters parameters;
+    LqrParameters parameters = setup.lqr;
     parameters.wheelbase_m = lambda;
     return std::make_unique<LqrController>(parameters, setup.path);
+  }
+  if (name == "mpc" || name == "mpc_constrained") {
+    MpcParameters parameters = setup.mpc;
+    parameters.wheelbase_m = lambda;
+    parameters.limits = setup.limits;
+    parameters.solver = name == "mpc" ? MpcSolver::unconstrained : MpcSolver::constrained;
+    return std::make_unique<MpcController>(parameters, setup.path);
   }
   std::string known;
   for (const std::string& candidate : comparison_controller_names()) {

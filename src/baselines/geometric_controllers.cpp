@@ -27,9 +27,7 @@ StanleyController::StanleyController(const StanleyParameters& parameters,
 }
 
 void StanleyController::reset(double measured_steering_angle_rad) noexcept {
-  steering_ = std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
-  rear_hint_.reset();
-  front_hint_.reset();
+  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
 }
 
 Status StanleyController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
@@ -45,14 +43,8 @@ Status StanleyController::update(const ControllerInput& input, ControllerOutput&
     steering_ = -heading_error - std::atan(parameters_.gain_per_s * front.lateral_error_m /
                                            (parameters_.softening_mps + input.speed_mps));
   }
-  output.steering_angle_rad = steering_;
-  output.steering_rate_radps = (steering_ - previous) / input.period_s;
-  output.steering_acceleration_radps2 = 0.0;
-  output.derivatives_available = 0;
-  output.diagnostics.sliding_variable = front.lateral_error_m;
-  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
-  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
-                           output.diagnostics);
+  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                      previous, front.lateral_error_m, output);
   return Status::ok;
 }
 
@@ -79,9 +71,7 @@ PurePursuitController::PurePursuitController(const PurePursuitParameters& parame
 }
 
 void PurePursuitController::reset(double measured_steering_angle_rad) noexcept {
-  steering_ = std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
-  rear_hint_.reset();
-  front_hint_.reset();
+  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
 }
 
 double PurePursuitController::lookahead_m(double speed_mps) const noexcept {
@@ -103,14 +93,8 @@ Status PurePursuitController::update(const ControllerInput& input,
     const double bearing = wrap_angle(std::atan2(to_target.y, to_target.x) - input.heading_rad);
     steering_ = std::atan(2.0 * parameters_.wheelbase_m * std::sin(bearing) / distance);
   }
-  output.steering_angle_rad = steering_;
-  output.steering_rate_radps = (steering_ - previous) / input.period_s;
-  output.steering_acceleration_radps2 = 0.0;
-  output.derivatives_available = 0;
-  output.diagnostics.sliding_variable = lookahead;
-  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
-  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
-                           output.diagnostics);
+  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                      previous, lookahead, output);
   return Status::ok;
 }
 

@@ -41,12 +41,8 @@ HosmController::HosmController(const HosmParameters& parameters, std::shared_ptr
 }
 
 void HosmController::reset(double measured_steering_angle_rad) noexcept {
-  const double bound = parameters_.steering_angle_bound_rad;
-  steering_ = std::isfinite(measured_steering_angle_rad)
-                  ? std::clamp(measured_steering_angle_rad, -bound, bound)
-                  : 0.0;
-  rear_hint_.reset();
-  front_hint_.reset();
+  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_,
+                         parameters_.steering_angle_bound_rad);
 }
 
 double HosmController::steering_rate_per_meter(double lateral_error_m, double heading_error_rad,
@@ -101,14 +97,9 @@ Status HosmController::update(const ControllerInput& input, ControllerOutput& ou
     steering_ = std::isfinite(previous) ? previous : 0.0;
     return Status::numerical_error;
   }
-  output.steering_angle_rad = steering_;
-  output.steering_rate_radps = (steering_ - previous) / input.period_s;
-  output.steering_acceleration_radps2 = 0.0;
-  output.derivatives_available = 1;
-  output.diagnostics.sliding_variable = rear.projection.lateral_error_m;
+  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                      previous, rear.projection.lateral_error_m, output, 1);
   output.diagnostics.lead_curvature = first_rate;
-  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
-                           output.diagnostics);
   return Status::ok;
 }
 

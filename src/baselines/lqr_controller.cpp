@@ -41,9 +41,7 @@ LqrController::LqrController(const LqrParameters& parameters, std::shared_ptr<co
 }
 
 void LqrController::reset(double measured_steering_angle_rad) noexcept {
-  steering_ = std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
-  rear_hint_.reset();
-  front_hint_.reset();
+  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
 }
 
 Status LqrController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
@@ -58,14 +56,8 @@ Status LqrController::update(const ControllerInput& input, ControllerOutput& out
     steering_ = feedforward - gains.lateral * rear.projection.lateral_error_m -
                 gains.heading * rear.heading_error_rad;
   }
-  output.steering_angle_rad = steering_;
-  output.steering_rate_radps = (steering_ - previous) / input.period_s;
-  output.steering_acceleration_radps2 = 0.0;
-  output.derivatives_available = 0;
-  output.diagnostics.sliding_variable = rear.projection.lateral_error_m;
-  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
-  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
-                           output.diagnostics);
+  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                      previous, rear.projection.lateral_error_m, output);
   return Status::ok;
 }
 

@@ -62,13 +62,9 @@ NewtonRaphsonController::NewtonRaphsonController(const NewtonRaphsonParameters& 
 }
 
 void NewtonRaphsonController::reset(double measured_steering_angle_rad) noexcept {
-  const double bound = parameters_.limits.angle_rad;
-  steering_ = std::isfinite(measured_steering_angle_rad)
-                  ? std::clamp(measured_steering_angle_rad, -bound, bound)
-                  : 0.0;
+  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_,
+                         parameters_.limits.angle_rad);
   rate_ = 0.0;
-  rear_hint_.reset();
-  front_hint_.reset();
 }
 
 Status NewtonRaphsonController::update(const ControllerInput& input,
@@ -101,15 +97,9 @@ Status NewtonRaphsonController::update(const ControllerInput& input,
   const double previous = steering_;
   steering_ = std::clamp(steering_ + rate * input.period_s, -angle_bound, angle_bound);
   const double applied_rate = (steering_ - previous) / input.period_s;
-  output.steering_angle_rad = steering_;
-  output.steering_rate_radps = applied_rate;
-  output.steering_acceleration_radps2 = (applied_rate - rate_) / input.period_s;
-  output.derivatives_available = 1;
+  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
+                      previous, offset, output, 1, (applied_rate - rate_) / input.period_s);
   rate_ = applied_rate;
-  output.diagnostics.sliding_variable = offset;
-  output.diagnostics.lead_curvature = std::tan(steering_) / parameters_.wheelbase_m;
-  detail::fill_diagnostics(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
-                           output.diagnostics);
   return Status::ok;
 }
 

@@ -7,6 +7,7 @@
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/feedforward.hpp"
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -166,7 +167,7 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
 
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
     Vec2 rear_position, double rear_travel_heading, bool refresh_target) noexcept {
-  // Lead-wheel state from projecting its own position (paper Sec. II end, notes §6).
+  // Lead-wheel state from projecting its own position (paper Sec. II end, paper_notes §6).
   const int n = parameters_.order;
   ChainGeometry geometry;
   chain_geometry(rear_position, rear_travel_heading, angles_, parameters_.wheelbases_m.data(), n,

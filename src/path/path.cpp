@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -159,6 +161,10 @@ Path Path::from_segments(std::vector<PathSegment> segments, bool closed) {
 }
 
 Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
+  if (segments.size() >= std::numeric_limits<std::uint32_t>::max() / 2) {
+    fail("Path: segment count = " + std::to_string(segments.size()) +
+         " must be < 2^31 (the projection index uses 32-bit node indices)");
+  }
   Path path;
   path.closed_ = closed;
   path.bounds_.reserve(segments.size());
@@ -186,19 +192,12 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
     }
     path.bounds_.push_back(bound);
   }
-  for (std::size_t first = 0; first < path.bounds_.size(); first += block_size) {
-    const std::size_t last = std::min(first + block_size, path.bounds_.size());
-    SegmentBound block{path.bounds_[(first + last) / 2].center, 0.0};
-    for (std::size_t i = first; i < last; ++i) {
-      block.radius = std::max(block.radius,
-                              norm(path.bounds_[i].center - block.center) + path.bounds_[i].radius);
-    }
-    path.block_bounds_.push_back(block);
-  }
   path.length_ = s;
   path.start_ = segments.front().evaluate_parameter(0.0);
   path.end_ = segments.back().evaluate_parameter(segments.back().parameter_end());
   path.segments_ = std::move(segments);
+  path.tree_.reserve(2 * path.bounds_.size() / leaf_size + 2);
+  path.build_tree(0, static_cast<std::uint32_t>(path.bounds_.size()));
   // Curvature samples for the feedforward's preview (docs/feedforward.md): every 0.25 m, coarser
   // on paths so long that this would exceed max_curvature_samples.
   path.curvature_spacing_ = std::max(curvature_sample_spacing,

@@ -1,4 +1,5 @@
-//! Closest-point projection onto a Path: a pruned global scan and a warm-started local walk.
+//! Closest-point projection onto a Path: the warm-started local walk and the conversion of a
+//! segment result into a path result (the global search is in path_segment_tree.cpp).
 //! Both are noexcept and allocation-free so that controllers can call them every cycle.
 
 #include <algorithm>
@@ -35,6 +36,16 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
     for (std::size_t step = 0; step < options.max_local_steps; ++step) {
       local = segments_[index].project_local(point, warm, /*exhaustive=*/false,
                                              options.compute_arc_length);
+      // On an open path the extensions are the neighbours of the end segments (path.hpp): one
+      // that is nearer than the local result ends the walk there.
+      if (index == 0 && adopt_extension(point, /*start=*/true, local)) {
+        settled = true;
+        break;
+      }
+      if (index + 1 == count && adopt_extension(point, /*start=*/false, local)) {
+        settled = true;
+        break;
+      }
       const int wanted = local.clamped_at_end ? 1 : (local.clamped_at_start ? -1 : 0);
       if (wanted == 0 || wanted == -direction) {
         settled = true;
@@ -61,58 +72,18 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
   return project_global(point, hint);
 }
 
-PathProjection Path::project_global(Vec2 point, ProjectionHint& hint) const noexcept {
-  const std::size_t count = segments_.size();
-  if (count == 0) return {};
-  // Nearest-first without sorting (no allocation): the block, and inside it the segment, with
-  // the smallest lower bound is projected first, so the pruning of all others starts tight.
-  std::size_t best_index = ProjectionHint::none;
-  SegmentProjection best;
-  auto consider = [&](std::size_t i) {
-    if (best_index != ProjectionHint::none &&
-        norm(point - bounds_[i].center) - bounds_[i].radius > best.distance_m) {
-      return;
-    }
-    const PathSegment& segment = segments_[i];
-    const SegmentProjection local = segment.project_local(point, 0.5 * segment.parameter_end());
-    if (best_index == ProjectionHint::none || local.distance_m < best.distance_m) {
-      best = local;
-      best_index = i;
-    }
-  };
-  auto scan_block = [&](std::size_t b) {
-    const std::size_t first = b * block_size;
-    const std::size_t last = std::min(first + block_size, count);
-    std::size_t nearest = first;
-    double nearest_bound = std::numeric_limits<double>::infinity();
-    for (std::size_t i = first; i < last; ++i) {
-      const double lower_bound = norm(point - bounds_[i].center) - bounds_[i].radius;
-      if (lower_bound < nearest_bound) {
-        nearest_bound = lower_bound;
-        nearest = i;
-      }
-    }
-    consider(nearest);
-    for (std::size_t i = first; i < last; ++i) {
-      if (i != nearest) consider(i);
-    }
-  };
-  auto block_lower_bound = [&](std::size_t b) {
-    return norm(point - block_bounds_[b].center) - block_bounds_[b].radius;
-  };
-  std::size_t nearest_block = 0;
-  for (std::size_t b = 1; b < block_bounds_.size(); ++b) {
-    if (block_lower_bound(b) < block_lower_bound(nearest_block)) nearest_block = b;
+bool Path::adopt_extension(Vec2 point, bool start, SegmentProjection& local) const noexcept {
+  if (closed_) return false;
+  const double distance = extension_distance(point, start);
+  if (!(distance < local.distance_m) && !(start ? local.clamped_at_start : local.clamped_at_end)) {
+    return false;
   }
-  scan_block(nearest_block);
-  for (std::size_t b = 0; b < block_bounds_.size(); ++b) {
-    if (b != nearest_block && block_lower_bound(b) <= best.distance_m) scan_block(b);
-  }
-  if (best_index == ProjectionHint::none) {  // only for a NaN query: keep the output defined
-    best_index = 0;
-    best = segments_.front().project_local(point, 0.0);
-  }
-  return finish_projection(point, best_index, best, hint);
+  const std::size_t index = start ? 0 : segments_.size() - 1;
+  local.distance_m = std::min(distance, local.distance_m);
+  local.parameter = start ? 0.0 : segments_[index].parameter_end();
+  local.clamped_at_start = start;
+  local.clamped_at_end = !start;
+  return true;
 }
 
 PathProjection Path::finish_projection(Vec2 point, std::size_t index,

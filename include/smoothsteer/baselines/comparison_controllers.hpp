@@ -12,6 +12,8 @@
 //!   stanley          Stanley (geometric_controllers.hpp)                            no
 //!   pure_pursuit     pure pursuit, speed-scaled look-ahead                          no
 //!   lqr              LQR on the lateral-error dynamics + curvature feedforward      no
+//!   mpc              Autoware's linear MPC, least squares + saturation (mpc_controller.hpp) no
+//!   mpc_constrained  the same MPC with hard angle and rate constraints (ALGLIB QP)   yes (QP)
 //!
 //! Every controller comes wrapped in a SaturatedController with the same SteeringLimits, which
 //! clamps what the controller does not respect itself and counts how often and by how much.
@@ -21,6 +23,10 @@
 #include <string_view>
 #include <vector>
 
+#include "smoothsteer/baselines/geometric_controllers.hpp"
+#include "smoothsteer/baselines/lqr_controller.hpp"
+#include "smoothsteer/baselines/mpc_controller.hpp"
+#include "smoothsteer/baselines/newton_raphson_controller.hpp"
 #include "smoothsteer/baselines/steering_limits.hpp"
 #include "smoothsteer/path/path.hpp"
 
@@ -39,6 +45,14 @@ struct ComparisonSetup {
   double hosm_heading_bound_rad = 0.6;
   //! lambda_l of proposed_c1 [m].
   double lead_wheelbase_m = 1.0;
+  //! Gains of the baselines, defaults from their sources (docs/baselines.md). The factory
+  //! overwrites their wheelbase with wheelbase_m, their limits with `limits`, and the MPC's
+  //! solver by name (mpc / mpc_constrained).
+  StanleyParameters stanley;
+  PurePursuitParameters pure_pursuit;
+  LqrParameters lqr;
+  NewtonRaphsonParameters newton_raphson;
+  MpcParameters mpc;
 
   void validate() const;
 };

@@ -14,6 +14,7 @@
 //! the field, the value and the rule. Evaluation and projection are noexcept and never allocate.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "smoothsteer/math/vec2.hpp"
@@ -94,7 +95,8 @@ class Path {
   //! Position, heading and curvature at arc length s (wrapped if closed, extended if open).
   PathPoint evaluate(double arc_length_m) const noexcept;
 
-  //! Global closest-point projection (no warm start): O(number of segments).
+  //! Global closest-point projection (no warm start), including the end extensions of open
+  //! paths: O(log N) on typical paths through a bounding-box hierarchy over the segments.
   PathProjection project(Vec2 point) const noexcept;
   //! Warm-started projection: amortised O(1) while the point moves continuously; falls back to
   //! the global search on the first call, after `hint.reset()`, after too many local steps, or
@@ -109,10 +111,33 @@ class Path {
     Vec2 center;
     double radius = 0.0;
   };
+  //! Node of the bounding-volume hierarchy over consecutive segments [first, first + count):
+  //! an axis-aligned box. Nodes are stored depth first: the left child follows its parent, the
+  //! right child sits at `right`. Leaves hold at most leaf_size segments.
+  struct BoxNode {
+    Vec2 lower;
+    Vec2 upper;
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    std::uint32_t right = 0;
+  };
+  static constexpr std::uint32_t leaf_size = 4;
+  //! Depth-first stack of the query; the tree halves index ranges, so its depth is about
+  //! log2(N / leaf_size) and this holds paths far beyond 2^60 segments.
+  static constexpr std::size_t max_stack = 128;
 
   //! Sets arc lengths, bounds and cached end poses; the segments are already validated.
   static Path assemble(std::vector<PathSegment> segments, bool closed);
+  //! Builds tree_ over [first, first + count) and returns the node's index.
+  std::uint32_t build_tree(std::uint32_t first, std::uint32_t count);
   PathProjection project_global(Vec2 point, ProjectionHint& hint) const noexcept;
+  //! Distance from `point` to the start (start = true) or end extension half-line of an open
+  //! path, or infinity if its closest point is not strictly on the half-line.
+  double extension_distance(Vec2 point, bool start) const noexcept;
+  //! Replaces `local`, a result on the first (start = true) or last segment, by the extension
+  //! beyond that end if the extension is nearer or `local` is clamped at that end (returns
+  //! true then).
+  bool adopt_extension(Vec2 point, bool start, SegmentProjection& local) const noexcept;
   //! Turns a segment-local result into a path result (s, end extensions, wrap) and stores
   //! the warm start.
   PathProjection finish_projection(Vec2 point, std::size_t index, const SegmentProjection& local,
@@ -120,10 +145,7 @@ class Path {
 
   std::vector<PathSegment> segments_;
   std::vector<SegmentBound> bounds_;
-  //! Bounds of consecutive blocks of block_size segments: the global search skips whole blocks
-  //! first, so a far-away query costs O(N / block_size + block_size), not O(N).
-  static constexpr std::size_t block_size = 64;
-  std::vector<SegmentBound> block_bounds_;
+  std::vector<BoxNode> tree_;
   PathPoint start_;  //!< pose at s = 0, for the start extension
   PathPoint end_;    //!< pose at s = length(), for the end extension
   double length_ = 0.0;

@@ -43,7 +43,7 @@ struct TuningOptions {
   //! kbar_l must not fall below this [1/m] (lead radius at most 1/this); else infeasible.
   double min_lead_curvature_bound = 1e-3;
   //! Matched disturbance kappa_d [1/m] and reference-path curvature bound [1/m] that k_rob must
-  //! cover (Sec. III item 2, paper-notes §6).
+  //! cover (Sec. III item 2, paper_notes §6).
   double matched_disturbance_curvature = 0.0;
   double path_curvature_bound = 0.0;
   //! Largest |d kappa / ds| of the reference path [1/m^2] (+inf: unknown or with jumps); the

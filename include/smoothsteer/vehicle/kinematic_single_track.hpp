@@ -4,14 +4,10 @@
 //!   dx/dt = v cos(psi),  dy/dt = v sin(psi),  dpsi/dt = v tan(delta) / lambda_veh  (eq. kappar)
 //! This is the model the controller is designed on.
 
+#include "smoothsteer/math/pose2.hpp"
 #include "smoothsteer/math/vec2.hpp"
 
 namespace smoothsteer {
-
-struct Pose2 {
-  Vec2 position;             //!< rear axle [m]
-  double heading_rad = 0.0;  //!< psi [rad]
-};
 
 struct KinematicSingleTrack {
   double wheelbase_m = 2.7;  //!< lambda_veh [m]

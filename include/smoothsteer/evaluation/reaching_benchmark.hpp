@@ -15,8 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "smoothsteer/baselines/optimal_reaching.hpp"
-#include "smoothsteer/baselines/results_table.hpp"
+#include "smoothsteer/evaluation/optimal_reaching.hpp"
+#include "smoothsteer/evaluation/paper_figures.hpp"
+#include "smoothsteer/evaluation/results_table.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 
 namespace smoothsteer {
@@ -52,7 +53,11 @@ struct ReachingBenchmarkResult {
   double front_curvature_bound = 0.0;      //!< kbar_f of the proposed controller [1/m]
   double hosm_heading_bound_rad = 0.0;     //!< psi-bar chosen for HOSM
   std::vector<ReachingBenchmarkCase> cases;
-  ResultsTable table() const;
+  //! The deterministic table (same on every run), with the paper's figures where `paper` has
+  //! them (table "roc_vx", case = psi0 with 4 decimals).
+  ResultsTable table(const PaperFigures& paper = {}) const;
+  //! The wall-clock solve times, apart so that the committed table does not churn.
+  ResultsTable timings_table() const;
 };
 
 ReachingBenchmarkResult run_reaching_benchmark(const ReachingBenchmarkOptions& options);

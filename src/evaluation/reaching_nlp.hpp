@@ -5,7 +5,7 @@
 #include <IpTNLP.hpp>
 
 #include "reaching_start.hpp"
-#include "smoothsteer/baselines/optimal_reaching.hpp"
+#include "smoothsteer/evaluation/optimal_reaching.hpp"
 
 namespace smoothsteer::detail {
 

@@ -1,56 +1,16 @@
-#include "smoothsteer/baselines/scenario_comparison.hpp"
-
-#ifdef SMOOTHSTEER_HAS_io
+#include "smoothsteer/evaluation/scenario_comparison.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
+#include "scenario_setup.hpp"
 #include "smoothsteer/baselines/comparison_controllers.hpp"
-#include "smoothsteer/io/controller_registry.hpp"
 #include "smoothsteer/io/scenario.hpp"
 
 namespace smoothsteer {
 
-namespace {
-
-ComparisonSetup setup_for(std::shared_ptr<const Path> path, double wheelbase_m, double speed,
-                          SteeringLimits limits) {
-  ComparisonSetup setup;
-  setup.path = std::move(path);
-  setup.wheelbase_m = wheelbase_m;
-  setup.nominal_speed_mps = speed;
-  setup.limits = limits;
-  return setup;
-}
-
-}  // namespace
-
-void register_comparison_controllers() {
-  for (const std::string& name : comparison_controller_names()) {
-    io::register_controller_type(
-        name,
-        [name](io::ConfigSection& section, std::shared_ptr<const Path> path,
-               const VehicleParameters& vehicle) -> std::unique_ptr<SteeringController> {
-          // Limits C1 and C2: the vehicle's, unless the section sets the rate limit (e.g. to
-          // the scenario actuator's max_rate_radps).
-          const SteeringLimits limits{
-              vehicle.max_steering_angle_rad,
-              section.number("max_steering_rate_radps", vehicle.max_steering_rate_radps,
-                             io::Range::positive())};
-          ComparisonSetup setup =
-              setup_for(std::move(path), vehicle.wheelbase_m(),
-                        section.number("nominal_speed_mps", 10.0, io::Range::positive()), limits);
-          setup.k_rob = section.number("k_rob", setup.k_rob, {0.0, 1.0, false, true});
-          setup.hosm_heading_bound_rad = section.number(
-              "hosm_heading_bound_rad", setup.hosm_heading_bound_rad, io::Range::positive());
-          setup.lead_wheelbase_m =
-              section.number("lead_wheelbase_m", setup.lead_wheelbase_m, io::Range::positive());
-          return make_comparison_controller(name, setup);
-        });
-  }
-}
-
-ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files) {
+ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files,
+                                        const PaperFigures& paper) {
   ResultsTable table;
   table.title = "Lane change (Falcone et al. 2007) on the kinetic model with actuator";
   table.header = {"speed_mps",         "controller",       "max_abs_e_m",
@@ -60,10 +20,7 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
   for (const std::string& file : scenario_files) {
     const io::Scenario scenario = io::load_scenario(file);
     const double speed = scenario.speed.initial_speed_mps;
-    const double paper = std::abs(speed - 10.0) < 0.5   ? 0.012
-                         : std::abs(speed - 15.0) < 0.5 ? 0.39
-                         : std::abs(speed - 19.0) < 0.5 ? 0.99
-                                                        : std::nan("");
+    const std::string speed_key = ResultsTable::number(speed, 1);
     // The scenario's own controller is the proposed one (lead_wheel, paper parameters).
     {
       const io::RunResult run = io::run_scenario(scenario);
@@ -74,15 +31,12 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
                             ResultsTable::number(m.command_acceleration_max_radps2, 2),
                             std::to_string(m.angle_violations), std::to_string(m.rate_violations),
                             "", "", ResultsTable::number(m.max_abs_side_slip_rad),
-                            ResultsTable::number(paper)});
+                            paper.text("lane_change", speed_key, "proposed_max_e_m", 3)});
     }
     for (const std::string& name : comparison_controller_names()) {
       // Every controller gets the limits the simulated actuator enforces, so that all rows are
       // compared under the same C1 and C2.
-      const SteeringLimits limits{scenario.actuator.max_angle_rad,
-                                  scenario.actuator.max_rate_radps};
-      auto controller = make_comparison_controller(
-          name, setup_for(scenario.path, scenario.vehicle.wheelbase_m(), speed, limits));
+      auto controller = make_comparison_controller(name, detail::comparison_setup_for(scenario));
       const io::RunResult run = io::run_scenario(scenario, *controller);
       const Metrics& m = run.metrics;
       const SaturationStatistics& s = controller->saturation();
@@ -102,10 +56,8 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
       "(max_angle_rad, max_rate_radps); proposed_c0/c1 are sized so that their worst case fits "
       "them at the scenario speed. angle_hits / rate_hits: updates in which the saturation "
       "clamped the raw command; for the scenario row: metric violations of the vehicle file's "
-      "limits (0.4 rad/s). Paper (Sec. IV-C, proposed, C^1): 0.012 / 0.39 / 0.99 m at 10 / 15 / 19 "
-      "m/s; "
-      "Newton-Raphson flow of Shivam et al. with a slip model: 0.07 m at 10 m/s, 0.25 m at 19 "
-      "m/s."};
+      "limits (0.4 rad/s). paper_max_e_m: the paper's proposed C^1 controller (Sec. IV-C), from "
+      "data/paper_figures.csv."};
   return table;
 }
 
@@ -152,5 +104,3 @@ ResultsTable run_parameter_comparison(const std::string& scenario_file) {
 }
 
 }  // namespace smoothsteer
-
-#endif  // SMOOTHSTEER_HAS_io

@@ -1,4 +1,4 @@
-#include "smoothsteer/baselines/results_table.hpp"
+#include "smoothsteer/evaluation/results_table.hpp"
 
 #include <cmath>
 #include <cstdio>

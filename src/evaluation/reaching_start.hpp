@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "smoothsteer/baselines/optimal_reaching.hpp"
+#include "smoothsteer/evaluation/optimal_reaching.hpp"
 
 namespace smoothsteer::detail {
 

@@ -1,12 +1,12 @@
-#include "smoothsteer/baselines/reaching_benchmark.hpp"
+#include "smoothsteer/evaluation/reaching_benchmark.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 
-#include "baseline_common.hpp"
 #include "smoothsteer/baselines/hosm_controller.hpp"
+#include "smoothsteer/baselines/parameter_checks.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 
@@ -131,7 +131,7 @@ ReachingBenchmarkResult run_reaching_benchmark(const ReachingBenchmarkOptions& o
   return result;
 }
 
-ResultsTable ReachingBenchmarkResult::table() const {
+ResultsTable ReachingBenchmarkResult::table(const PaperFigures& paper) const {
   ResultsTable t;
   t.title = "Tab. roc_vx: travelled distance until the path is reached";
   t.header = {"psi0_rad",
@@ -143,26 +143,22 @@ ResultsTable ReachingBenchmarkResult::table() const {
               "hosm/optimal_relaxed",
               "paper_optimal_m",
               "paper_proposed_m",
-              "paper_hosm_m",
-              "optimal_solve_s"};
-  const double paper[3][3] = {{1.42, 1.69, 1.82}, {1.17, 1.38, 2.14}, {1.91, 2.24, 3.00}};
+              "paper_hosm_m"};
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const ReachingBenchmarkCase& c = cases[i];
     const double optimal = c.optimum.converged ? c.optimum.distance_m : std::nan("");
     const double relaxed =
         c.relaxed_optimum.converged ? c.relaxed_optimum.distance_m : std::nan("");
-    const bool has_paper = cases.size() == 3;
-    t.rows.push_back({ResultsTable::number(c.initial_heading_rad, 4), ResultsTable::number(optimal),
-                      ResultsTable::number(relaxed), ResultsTable::number(c.proposed_distance_m),
-                      ResultsTable::number(c.hosm_distance_m),
-                      // Ratios against the optimum into the SAME band as the controllers; the
-                      // exact optimum (to e = psi = delta = 0) would favour them unfairly.
-                      ResultsTable::number(c.proposed_distance_m / relaxed, 2),
-                      ResultsTable::number(c.hosm_distance_m / relaxed, 2),
-                      has_paper ? ResultsTable::number(paper[i][0], 2) : "",
-                      has_paper ? ResultsTable::number(paper[i][1], 2) : "",
-                      has_paper ? ResultsTable::number(paper[i][2], 2) : "",
-                      ResultsTable::number(c.optimum.solve_time_s, 2)});
+    const std::string key = ResultsTable::number(c.initial_heading_rad, 4);
+    t.rows.push_back(
+        {key, ResultsTable::number(optimal), ResultsTable::number(relaxed),
+         ResultsTable::number(c.proposed_distance_m), ResultsTable::number(c.hosm_distance_m),
+         // Ratios against the optimum into the SAME band as the controllers; the
+         // exact optimum (to e = psi = delta = 0) would favour them unfairly.
+         ResultsTable::number(c.proposed_distance_m / relaxed, 2),
+         ResultsTable::number(c.hosm_distance_m / relaxed, 2),
+         paper.text("roc_vx", key, "optimal_m", 2), paper.text("roc_vx", key, "proposed_m", 2),
+         paper.text("roc_vx", key, "hosm_m", 2)});
   }
   const ReachingBenchmarkOptions& o = options;
   t.notes = {
@@ -181,7 +177,21 @@ ResultsTable ReachingBenchmarkResult::table() const {
       "Proposed: n = 1, k_rob = 0. HOSM: psi_bar = " +
           ResultsTable::number(hosm_heading_bound_rad, 2) +
           " rad, tuned for psi0 = 0. Optimal: trapezoidal collocation, N = " +
-          std::to_string(o.intervals) + ", Ipopt."};
+          std::to_string(o.intervals) +
+          ", Ipopt. Paper columns: data/paper_figures.csv; solve "
+          "times: roc_vx_timings (not committed)."};
+  return t;
+}
+
+ResultsTable ReachingBenchmarkResult::timings_table() const {
+  ResultsTable t;
+  t.title = "Tab. roc_vx: wall-clock time of the Ipopt solves (varies between runs)";
+  t.header = {"psi0_rad", "optimal_solve_s", "optimal_relaxed_solve_s"};
+  for (const ReachingBenchmarkCase& c : cases) {
+    t.rows.push_back({ResultsTable::number(c.initial_heading_rad, 4),
+                      ResultsTable::number(c.optimum.solve_time_s, 2),
+                      ResultsTable::number(c.relaxed_optimum.solve_time_s, 2)});
+  }
   return t;
 }
 

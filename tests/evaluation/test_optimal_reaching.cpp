@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "smoothsteer/baselines/optimal_reaching.hpp"
-#include "smoothsteer/baselines/reaching_benchmark.hpp"
 #include "smoothsteer/baselines/triple_integrator.hpp"
+#include "smoothsteer/evaluation/optimal_reaching.hpp"
+#include "smoothsteer/evaluation/reaching_benchmark.hpp"
 #include "support/property.hpp"
 
 namespace smoothsteer {

@@ -1,4 +1,4 @@
-#include "smoothsteer/baselines/optimal_reaching.hpp"
+#include "smoothsteer/evaluation/optimal_reaching.hpp"
 
 #include <IpIpoptApplication.hpp>
 #include <IpSolveStatistics.hpp>
@@ -8,9 +8,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "baseline_common.hpp"
 #include "reaching_nlp.hpp"
 #include "reaching_start.hpp"
+#include "smoothsteer/baselines/parameter_checks.hpp"
 
 namespace smoothsteer {
 

@@ -1,0 +1,249 @@
+#include "smoothsteer/evaluation/tuning_rule.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+#include "scenario_setup.hpp"
+#include "smoothsteer/baselines/parameter_checks.hpp"
+
+namespace smoothsteer {
+
+namespace {
+
+// Ranges: about a factor 4 either side of each default (docs/baselines.md "Gains").
+const std::map<std::string, std::vector<GainAxis>, std::less<>>& axes_table() {
+  static const std::map<std::string, std::vector<GainAxis>, std::less<>> table{
+      {"hosm", {{"hosm_heading_bound_rad", 0.1, 1.2}}},
+      {"newton_raphson", {{"horizon_s", 0.3, 2.4}, {"gain_per_s", 1.0, 16.0}}},
+      {"stanley", {{"gain_per_s", 0.5, 8.0}, {"softening_mps", 0.25, 4.0}}},
+      {"pure_pursuit", {{"min_lookahead_m", 1.5, 12.0}, {"lookahead_time_s", 0.15, 1.2}}},
+      {"lqr",
+       {{"weight_lateral", 0.1, 10.0},
+        {"weight_heading", 0.1, 10.0},
+        {"weight_steering", 1.0, 1000.0}}},
+      {"mpc",
+       {{"weight_lateral_error", 0.01, 10.0},
+        {"weight_heading_error_squared_speed", 0.03, 3.0},
+        {"weight_steering_input", 0.1, 10.0}}},
+      {"mpc_constrained",
+       {{"weight_lateral_error", 0.01, 10.0},
+        {"weight_heading_error_squared_speed", 0.03, 3.0},
+        {"weight_steering_input", 0.1, 10.0}}}};
+  return table;
+}
+
+double grid_value(const GainAxis& axis, int index, int count) {
+  if (count == 1) return std::sqrt(axis.low * axis.high);
+  const double fraction = static_cast<double>(index) / (count - 1);
+  return axis.low * std::pow(axis.high / axis.low, fraction);
+}
+
+ScenarioScore score(const io::Scenario& scenario, const std::string& controller,
+                    const std::vector<std::pair<std::string, double>>& gains, double divergence_m) {
+  ComparisonSetup setup = detail::comparison_setup_for(scenario);
+  for (const auto& [key, value] : gains) apply_gain(controller, key, value, setup);
+  auto saturated = make_comparison_controller(controller, setup);
+  const io::RunResult run = io::run_scenario(scenario, *saturated);
+  const Metrics& m = run.metrics;
+  ScenarioScore result;
+  result.scenario = scenario.name;
+  result.max_abs_e_m = m.max_abs_rear_error_m;
+  result.max_abs_e_after_reaching_m = m.max_abs_rear_error_after_reaching_m;
+  result.rate_std_radps = m.command_rate_std_radps;
+  result.max_side_slip_rad = m.max_abs_side_slip_rad;
+  result.clamped_updates =
+      saturated->saturation().angle_limited + saturated->saturation().rate_limited;
+  result.diverged = !std::isfinite(m.max_abs_rear_error_m) ||
+                    m.max_abs_rear_error_m > divergence_m || m.non_finite_values > 0;
+  return result;
+}
+
+}  // namespace
+
+std::vector<GainAxis> gain_axes(std::string_view controller) {
+  const auto found = axes_table().find(controller);
+  return found == axes_table().end() ? std::vector<GainAxis>{} : found->second;
+}
+
+void apply_gain(std::string_view controller, const std::string& key, double value,
+                ComparisonSetup& setup) {
+  const auto unknown = [&] {
+    throw std::invalid_argument("apply_gain: key '" + key + "' is not a tuned gain of '" +
+                                std::string(controller) + "'");
+  };
+  if (controller == "hosm" && key == "hosm_heading_bound_rad") {
+    setup.hosm_heading_bound_rad = value;
+  } else if (controller == "newton_raphson") {
+    if (key == "horizon_s")
+      setup.newton_raphson.horizon_s = value;
+    else if (key == "gain_per_s")
+      setup.newton_raphson.gain_per_s = value;
+    else
+      unknown();
+  } else if (controller == "stanley") {
+    if (key == "gain_per_s")
+      setup.stanley.gain_per_s = value;
+    else if (key == "softening_mps")
+      setup.stanley.softening_mps = value;
+    else
+      unknown();
+  } else if (controller == "pure_pursuit") {
+    if (key == "min_lookahead_m")
+      setup.pure_pursuit.min_lookahead_m = value;
+    else if (key == "lookahead_time_s")
+      setup.pure_pursuit.lookahead_time_s = value;
+    else
+      unknown();
+  } else if (controller == "lqr") {
+    if (key == "weight_lateral")
+      setup.lqr.weight_lateral = value;
+    else if (key == "weight_heading")
+      setup.lqr.weight_heading = value;
+    else if (key == "weight_steering")
+      setup.lqr.weight_steering = value;
+    else
+      unknown();
+  } else if (controller == "mpc" || controller == "mpc_constrained") {
+    if (key == "weight_lateral_error")
+      setup.mpc.weight_lateral_error = value;
+    else if (key == "weight_heading_error_squared_speed")
+      setup.mpc.weight_heading_error_squared_speed = value;
+    else if (key == "weight_steering_input")
+      setup.mpc.weight_steering_input = value;
+    else
+      unknown();
+  } else {
+    unknown();
+  }
+}
+
+std::vector<int> grid_shape(int budget, std::size_t axes) {
+  const bool power_of_two = budget >= 1 && budget <= 4096 && (budget & (budget - 1)) == 0;
+  int factors = 0;
+  while (power_of_two && (1 << factors) < budget) ++factors;
+  detail::require(power_of_two && static_cast<std::size_t>(factors) >= axes, "TuningRuleOptions",
+                  "budget", budget,
+                  "must be a power of two in [2^" + std::to_string(axes) +
+                      ", 4096] (at least two grid points per gain)");
+  std::vector<int> shape(axes, 1);
+  for (int factor = 0; axes > 0 && factor < factors; ++factor) shape[factor % axes] *= 2;
+  return shape;
+}
+
+void TuningRuleOptions::validate() const {
+  detail::require(detail::positive_finite(divergence_m), "TuningRuleOptions", "divergence_m",
+                  divergence_m, "must be finite and > 0");
+  for (const std::string& name : controllers) {
+    const auto& known = comparison_controller_names();
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      throw std::invalid_argument("TuningRuleOptions: controllers contains '" + name +
+                                  "', which is not a comparison controller");
+    }
+    if (const std::size_t axes = gain_axes(name).size(); axes > 0) grid_shape(budget, axes);
+  }
+}
+
+TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
+                                 const std::vector<io::Scenario>& held_out,
+                                 const TuningRuleOptions& options) {
+  options.validate();
+  if (training.empty() || held_out.empty()) {
+    throw std::invalid_argument(
+        "run_tuning_rule: training and held_out each need at least one scenario");
+  }
+  TuningRuleResult result;
+  result.options = options;
+  for (const io::Scenario& s : training) result.training.push_back(s.name);
+  for (const io::Scenario& s : held_out) result.held_out.push_back(s.name);
+  for (const std::string& controller : options.controllers) {
+    const std::vector<GainAxis> axes = gain_axes(controller);
+    const std::vector<int> shape =
+        axes.empty() ? std::vector<int>{} : grid_shape(options.budget, axes.size());
+    int configurations = 1;
+    for (int count : shape) configurations *= count;
+    // Key of a configuration: (not admissible, worst max |e|, mean rate std, grid index).
+    using Rank = std::tuple<bool, double, double, int>;
+    Rank best{true, HUGE_VAL, HUGE_VAL, configurations};
+    std::vector<std::pair<std::string, double>> best_gains;
+    for (int index = 0; index < configurations; ++index) {
+      std::vector<std::pair<std::string, double>> gains;
+      int remainder = index;
+      for (std::size_t a = axes.size(); a-- > 0;) {  // last axis varies fastest
+        const int count = shape[a];
+        gains.insert(gains.begin(), {axes[a].key, grid_value(axes[a], remainder % count, count)});
+        remainder /= count;
+      }
+      bool admissible = true;
+      double worst = 0.0, rate_sum = 0.0;
+      for (const io::Scenario& scenario : training) {
+        const ScenarioScore s = score(scenario, controller, gains, options.divergence_m);
+        admissible = admissible && !s.diverged && s.clamped_updates == 0;
+        worst = std::max(worst, std::isfinite(s.max_abs_e_m) ? s.max_abs_e_m : HUGE_VAL);
+        rate_sum += s.rate_std_radps;
+      }
+      const Rank rank{!admissible, worst, rate_sum / static_cast<double>(training.size()), index};
+      if (rank < best) {
+        best = rank;
+        best_gains = gains;
+      }
+    }
+    TunedController tuned;
+    tuned.controller = controller;
+    tuned.gains = best_gains;
+    tuned.configurations = configurations;
+    tuned.admissible = !std::get<0>(best);
+    tuned.training_worst_max_abs_e_m = std::get<1>(best);
+    for (const io::Scenario& scenario : held_out) {
+      tuned.held_out.push_back(score(scenario, controller, best_gains, options.divergence_m));
+    }
+    result.controllers.push_back(std::move(tuned));
+  }
+  return result;
+}
+
+ResultsTable TuningRuleResult::table() const {
+  ResultsTable t;
+  t.title = "Every controller tuned by one rule, reported on held-out scenarios";
+  t.header = {"scenario",       "controller",
+              "max_abs_e_m",    "max_abs_e_after_reaching_m",
+              "rate_std_radps", "clamped_updates",
+              "diverged",       "max_side_slip_rad",
+              "configurations", "admissible_in_training",
+              "gains"};
+  for (std::size_t s = 0; s < held_out.size(); ++s) {
+    for (const TunedController& c : controllers) {
+      const ScenarioScore& score = c.held_out[s];
+      std::string gains;
+      for (const auto& [key, value] : c.gains) {
+        gains += (gains.empty() ? "" : " ") + key + "=" + ResultsTable::number(value, 4);
+      }
+      t.rows.push_back({score.scenario, c.controller, ResultsTable::number(score.max_abs_e_m),
+                        ResultsTable::number(score.max_abs_e_after_reaching_m),
+                        ResultsTable::number(score.rate_std_radps),
+                        std::to_string(score.clamped_updates), score.diverged ? "yes" : "no",
+                        ResultsTable::number(score.max_side_slip_rad),
+                        std::to_string(c.configurations), c.admissible ? "yes" : "no",
+                        gains.empty() ? "fixed" : gains});
+    }
+  }
+  std::string training_names, held_out_names;
+  for (const std::string& name : training) training_names += " " + name;
+  for (const std::string& name : held_out) held_out_names += " " + name;
+  t.notes = {"Tuning rule (docs/baselines.md): log-spaced grid of " +
+                 std::to_string(options.budget) +
+                 " configurations per tuned controller; chosen on:" + training_names +
+                 "; reported on:" + held_out_names +
+                 ". Lead-wheel controllers (dubins_smc, proposed_*) keep fixed parameters.",
+             "Chosen: admissible (no clamped update, max |e| <= " +
+                 ResultsTable::number(options.divergence_m, 1) +
+                 " m) on every training scenario first, then the smallest worst-case max |e|, "
+                 "then the smallest mean rate std. max_abs_e_after_reaching_m: after the lead "
+                 "wheel stays within the scenario's reaching threshold (-1: never); on "
+                 "circle_sections the whole-run max |e| is the 1 m start offset."};
+  return t;
+}
+
+}  // namespace smoothsteer
