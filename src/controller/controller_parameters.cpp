@@ -1,5 +1,7 @@
 #include "smoothsteer/controller/controller_parameters.hpp"
 
+#include "smoothsteer/controller/steering_certificate.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -126,13 +128,12 @@ ControllerParameters ControllerParameters::paper_c1(double vehicle_wheelbase_m,
   ControllerParameters parameters;
   parameters.order = 2;
   parameters.vehicle_wheelbase_m = vehicle_wheelbase_m;
-  const double squared =
-      vehicle_wheelbase_m * vehicle_wheelbase_m - lead_wheelbase_m * lead_wheelbase_m;
-  if (!(squared > 0.0)) {
+  parameters.wheelbases_m[0] =
+      cornering_front_wheelbase(vehicle_wheelbase_m, lead_wheelbase_m * lead_wheelbase_m);
+  if (!(parameters.wheelbases_m[0] > 0.0)) {
     throw std::invalid_argument(describe("lead wheelbase lambda_l", lead_wheelbase_m,
                                          "must be < vehicle_wheelbase_m (eq. cornering_constr)"));
   }
-  parameters.wheelbases_m[0] = std::sqrt(squared);  // eq. (cornering_constr)
   parameters.wheelbases_m[1] = lead_wheelbase_m;
   parameters.lead_curvature_bound = lead_curvature_bound;
   parameters.k_rob = k_rob;

@@ -92,4 +92,9 @@ double stationary_lead_curvature(double rear_curvature, double chain_length_squa
   return rear_curvature / std::sqrt(1.0 + rear_curvature * rear_curvature * chain_length_squared);
 }
 
+double cornering_front_wheelbase(double vehicle_wheelbase_m, double outer_length_squared) noexcept {
+  const double squared = vehicle_wheelbase_m * vehicle_wheelbase_m - outer_length_squared;
+  return std::isfinite(squared) && squared > 0.0 ? std::sqrt(squared) : 0.0;
+}
+
 }  // namespace smoothsteer

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/tuning/schedule_files.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 
@@ -74,7 +75,7 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
   } else {
     const double lead = c.number("lead_wheelbase_m", 1.0, {0.0, wheelbase, true, true});
     if (p.order == 2) {
-      p.wheelbases_m[0] = std::sqrt(wheelbase * wheelbase - lead * lead);
+      p.wheelbases_m[0] = cornering_front_wheelbase(wheelbase, lead * lead);
       p.wheelbases_m[1] = lead;
     } else if (p.order == 1) {
       p.wheelbases_m[0] = wheelbase;

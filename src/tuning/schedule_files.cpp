@@ -129,7 +129,11 @@ void write_schedule_csv(const GainSchedule& schedule, const std::string& csv_pat
           << ',' << e.max_steering_rate_radps << ',' << e.max_steering_acceleration_radps2 << ','
           << e.feedforward_curvature_bound << ',' << e.feedforward_curvature_rate << '\n';
     }
-    if (!out.flush()) throw std::runtime_error("cannot write " + temporary);
+    if (!out.flush()) {
+      out.close();
+      std::remove(temporary.c_str());  // no half-written file is left behind
+      throw std::runtime_error("cannot write " + temporary);
+    }
   }
   if (std::rename(temporary.c_str(), csv_path.c_str()) != 0) {
     std::remove(temporary.c_str());
@@ -167,10 +171,24 @@ GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerPara
       }
       char* end = nullptr;
       v[c] = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || (std::isnan(v[c]))) {
+      // The whole cell is the number; only the certified acceleration (no limit) and the
+      // feedforward rate (no rate limit) may be +inf.
+      const bool may_be_infinite = c == 9 || c == 11;
+      if (end == cell.c_str() || *end != '\0' || std::isnan(v[c]) ||
+          (!may_be_infinite && std::isinf(v[c]))) {
         throw std::invalid_argument(csv_path + ": line " + std::to_string(number) + ": column " +
-                                    kColumns[c] + " = '" + cell + "' is not a number");
+                                    kColumns[c] + " = '" + cell + "' is not a finite number");
       }
+    }
+    if (std::getline(row, cell, ',')) {
+      throw std::invalid_argument(csv_path + ": line " + std::to_string(number) + ": more than " +
+                                  std::to_string(columns) + " columns");
+    }
+    // Region labels 1-5 (VelocityRegion); checked before the conversion to int.
+    if (!(v[1] >= 1.0 && v[1] <= 5.0 && v[1] == std::floor(v[1]))) {
+      throw std::invalid_argument(csv_path + ": line " + std::to_string(number) +
+                                  ": column region = " + std::to_string(v[1]) +
+                                  " must be an integer in [1, 5]");
     }
     ScheduleEntry e;
     e.speed_mps = v[0];

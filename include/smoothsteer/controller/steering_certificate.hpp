@@ -62,4 +62,9 @@ OutputSlopes output_slope_bounds(double vehicle_wheelbase_m, double front_wheelb
 double stationary_rear_curvature(double lead_curvature, double chain_length_squared) noexcept;
 double stationary_lead_curvature(double rear_curvature, double chain_length_squared) noexcept;
 
+//! Eq. (cornering_constr), generalised: lambda_1 = sqrt(lambda_veh^2 - sum_{i>=2} lambda_i^2),
+//! so that in stationary cornering the lead wheel runs in the real front wheel's track. Returns
+//! 0 when the outer wheelbases are not shorter than lambda_veh (callers reject that).
+double cornering_front_wheelbase(double vehicle_wheelbase_m, double outer_length_squared) noexcept;
+
 }  // namespace smoothsteer
