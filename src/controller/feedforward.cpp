@@ -30,25 +30,30 @@ double frenet_feedforward_curvature(double target_curvature, double error_from_t
          std::max(smallest_denominator, 1.0 - target_curvature * error_from_target);
 }
 
-double preview_curvature(const Path& path, double arc_length_m, double rate_per_meter,
-                         double bound) noexcept {
-  auto sample = [&](double at) { return std::clamp(path.sampled_curvature(at), -bound, bound); };
-  const double centre = sample(arc_length_m);
-  if (!(rate_per_meter > 0.0) || !std::isfinite(rate_per_meter)) return centre;
-  const double slope = 2.0 * rate_per_meter;
+PreviewedCurvature preview_curvature(const Path& path, double arc_length_m, double step_m,
+                                     double rate_per_meter, double bound) noexcept {
   const double spacing = path.curvature_sample_spacing_m();
-  const int count = static_cast<int>(
-      std::min<double>(max_preview_samples, std::ceil(2.0 * bound / slope / spacing)));
-  double upper = centre, lower = centre;
-  for (int k = 1; k <= count; ++k) {
-    const double distance = k * spacing;
-    for (const double at : {arc_length_m - distance, arc_length_m + distance}) {
-      const double curvature = sample(at);
-      upper = std::min(upper, curvature + slope * distance);
-      lower = std::max(lower, curvature - slope * distance);
+  const long centre = std::lround(arc_length_m / spacing);
+  const long offset = std::max(1L, std::lround(step_m / spacing));  // s +- step in samples
+  auto sample = [&](long index) { return std::clamp(path.curvature_sample(index), -bound, bound); };
+  if (!(rate_per_meter > 0.0) || !std::isfinite(rate_per_meter)) {
+    return {sample(centre - offset), sample(centre), sample(centre + offset)};
+  }
+  // Envelopes of the three points at once: sample j lies |j - (centre + p)| samples from point p.
+  const double slope = 2.0 * rate_per_meter * spacing;  // per sample
+  const long reach = static_cast<long>(
+      std::min<double>(max_preview_samples, std::ceil(bound / (rate_per_meter * spacing))));
+  double upper[3], lower[3];
+  for (int p = 0; p < 3; ++p) upper[p] = lower[p] = sample(centre + (p - 1) * offset);
+  for (long j = centre - offset - reach; j <= centre + offset + reach; ++j) {
+    const double curvature = sample(j);
+    for (int p = 0; p < 3; ++p) {
+      const double distance = slope * static_cast<double>(std::labs(j - centre - (p - 1) * offset));
+      upper[p] = std::min(upper[p], curvature + distance);
+      lower[p] = std::max(lower[p], curvature - distance);
     }
   }
-  return 0.5 * (upper + lower);
+  return {0.5 * (upper[0] + lower[0]), 0.5 * (upper[1] + lower[1]), 0.5 * (upper[2] + lower[2])};
 }
 
 }  // namespace smoothsteer

@@ -147,21 +147,21 @@ double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
 }
 
 TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const noexcept {
-  // The path's curvature as the rate-limited feedforward should see it: with a finite L_ff the
-  // previewed samples (a jump becomes a ramp centred on it), else the projection's own value.
+  // The path's curvature as the rate-limited feedforward should see it (feedforward.hpp): with a
+  // finite L_ff the previewed samples (a jump becomes a ramp centred on it), else the
+  // projection's own value and the path at +- one step.
   const double rate = parameters_.feedforward_curvature_rate;
-  const double bound = std::max(parameters_.feedforward_curvature_bound(), 1e-12);
-  const bool preview = std::isfinite(rate) && rate > 0.0;
-  auto curvature_at = [&](double offset) {
-    return preview ? preview_curvature(*path_, lead.arc_length_m + offset, rate, bound)
-                   : (offset == 0.0 ? lead.curvature
-                                    : path_->evaluate(lead.arc_length_m + offset).curvature);
-  };
-  if (parameters_.cornering_target != CorneringTarget::rear_axle) {
-    return {0.0, 0.0, curvature_at(0.0)};
+  const bool rear_target = parameters_.cornering_target == CorneringTarget::rear_axle;
+  PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
+  if (std::isfinite(rate) && rate > 0.0) {
+    const double bound = std::max(parameters_.feedforward_curvature_bound(), 1e-12);
+    curvature = preview_curvature(*path_, lead.arc_length_m, kTargetCurveStep, rate, bound);
+  } else if (rear_target) {
+    curvature.before = path_->evaluate(lead.arc_length_m - kTargetCurveStep).curvature;
+    curvature.after = path_->evaluate(lead.arc_length_m + kTargetCurveStep).curvature;
   }
-  return rear_axle_target_curve(curvature_at(-kTargetCurveStep), curvature_at(0.0),
-                                curvature_at(kTargetCurveStep), kTargetCurveStep,
+  if (!rear_target) return {0.0, 0.0, curvature.at};
+  return rear_axle_target_curve(curvature.before, curvature.at, curvature.after, kTargetCurveStep,
                                 chain_length_squared_);
 }
 

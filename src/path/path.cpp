@@ -198,7 +198,7 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   path.segments_ = std::move(segments);
   path.tree_.reserve(2 * path.bounds_.size() / leaf_size + 2);
   path.build_tree(0, static_cast<std::uint32_t>(path.bounds_.size()));
-  // Curvature samples for the feedforward's preview (docs/feedforward.md): every 0.25 m, coarser
+  // Curvature samples for the feedforward's preview (docs/feedforward.md): every 0.5 m, coarser
   // on paths so long that this would exceed max_curvature_samples.
   path.curvature_spacing_ = std::max(curvature_sample_spacing,
                                      path.length_ / static_cast<double>(max_curvature_samples - 1));
@@ -223,6 +223,20 @@ double Path::sampled_curvature(double arc_length_m) const noexcept {
   }
   const auto index = static_cast<std::size_t>(std::lround(s / curvature_spacing_));
   return curvature_samples_[std::min(index, curvature_samples_.size() - 1)];
+}
+
+double Path::curvature_sample(long index) const noexcept {
+  const auto count = static_cast<long>(curvature_samples_.size());
+  if (count == 0) return 0.0;
+  if (closed_) {
+    // The last sample sits at s = length(), the same point as the first.
+    const long period = std::max(1L, count - 1);
+    index %= period;
+    if (index < 0) index += period;
+  } else if (index < 0 || index >= count) {
+    return 0.0;
+  }
+  return curvature_samples_[static_cast<std::size_t>(index)];
 }
 
 PathPoint Path::evaluate(double arc_length_m) const noexcept {

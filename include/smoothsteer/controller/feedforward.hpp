@@ -33,15 +33,21 @@ TargetCurve rear_axle_target_curve(double curvature_before, double curvature,
 double frenet_feedforward_curvature(double target_curvature, double error_from_target,
                                     double heading_from_target) noexcept;
 
-//! The path's curvature at arc length s as the rate-limited feedforward should see it: samples
-//! clamped to +-bound, then the midpoint of their upper and lower Lipschitz envelopes with slope
-//! 2 rate (over the window 2 bound / (2 rate) ahead and behind). Where the path's curvature
-//! changes no faster than 2 rate this is the curvature itself; a jump becomes a ramp of slope
-//! `rate` centred on it, which the rate limit follows exactly, so the lead wheel starts turning
-//! half a ramp before the jump (zero phase). rate = +inf or <= 0: the sample at s. The window is
-//! capped at max_preview_samples samples each way: O(1) per call, no allocation.
-double preview_curvature(const Path& path, double arc_length_m, double rate_per_meter,
-                         double bound) noexcept;
+//! The path's curvature as the rate-limited feedforward should see it, at arc length s and
+//! `step` before and after it: samples clamped to +-bound, then the midpoint of their upper and
+//! lower Lipschitz envelopes with slope 2 rate (over the window bound / rate ahead and behind).
+//! Where the path's curvature changes no faster than 2 rate this is the curvature itself; a jump
+//! becomes a ramp of slope `rate` centred on it, which the rate limit follows exactly, so the
+//! lead wheel starts turning half a ramp before the jump (zero phase). rate = +inf or <= 0: the
+//! samples themselves. One pass over at most 2 max_preview_samples + 1 samples for the three
+//! points: O(1) per call, no allocation.
+struct PreviewedCurvature {
+  double before = 0.0;  //!< at s - step
+  double at = 0.0;      //!< at s
+  double after = 0.0;   //!< at s + step
+};
+PreviewedCurvature preview_curvature(const Path& path, double arc_length_m, double step_m,
+                                     double rate_per_meter, double bound) noexcept;
 inline constexpr int max_preview_samples = 400;
 
 }  // namespace smoothsteer

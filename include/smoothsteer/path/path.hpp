@@ -91,6 +91,8 @@ class Path {
   double curvature_sample_spacing_m() const noexcept { return curvature_spacing_; }
   //! The sample nearest to arc length s (wrapped if closed; 0 on the straight end extensions).
   double sampled_curvature(double arc_length_m) const noexcept;
+  //! Sample i (wrapped if closed; 0 outside [0, length()] on open paths).
+  double curvature_sample(long index) const noexcept;
 
   //! Position, heading and curvature at arc length s (wrapped if closed, extended if open).
   PathPoint evaluate(double arc_length_m) const noexcept;
@@ -151,7 +153,7 @@ class Path {
   double length_ = 0.0;
   double max_abs_curvature_ = 0.0;
   bool closed_ = false;
-  static constexpr double curvature_sample_spacing = 0.25;        //!< [m]
+  static constexpr double curvature_sample_spacing = 0.5;         //!< [m]
   static constexpr std::size_t max_curvature_samples = 1u << 22;  //!< 32 MiB at most
   double curvature_spacing_ = curvature_sample_spacing;
   std::vector<double> curvature_samples_;
