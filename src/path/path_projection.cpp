@@ -72,6 +72,15 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
   return project_global(point, hint);
 }
 
+ProjectionHint Path::reseed_hint(const Path& previous, const ProjectionHint& hint) const noexcept {
+  ProjectionHint seeded;
+  if (hint.segment_index >= previous.segments_.size() || segments_.empty()) return seeded;
+  const Vec2 where =
+      previous.segments_[hint.segment_index].evaluate_parameter(hint.parameter).position;
+  project_global(where, seeded);
+  return seeded;
+}
+
 bool Path::adopt_extension(Vec2 point, bool start, SegmentProjection& local) const noexcept {
   if (closed_) return false;
   const double distance = extension_distance(point, start);

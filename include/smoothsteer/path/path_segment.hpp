@@ -28,6 +28,12 @@ struct SegmentProjection {
   bool clamped_at_end = false;
 };
 
+//! An axis-aligned box [lower, upper] [m].
+struct SegmentBox {
+  Vec2 lower;
+  Vec2 upper;
+};
+
 //! A plain segment record. Lines and arcs are described by their start pose and curvature
 //! (local parameter = local arc length); cubics by polynomial coefficients
 //! x(t) = x[0] + x[1] t + x[2] t^2 + x[3] t^3 (same for y), t in [0, t_end], which the spline
