@@ -167,7 +167,9 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   }
   Path path;
   path.closed_ = closed;
-  path.boxes_.reserve(segments.size());
+  path.capsules_.reserve(segments.size());
+  std::vector<SegmentBox> boxes;
+  boxes.reserve(segments.size());
   double s = 0.0;
   for (PathSegment& segment : segments) {
     segment.s0 = s;
@@ -194,15 +196,15 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
       }
     }
     const Vec2 reach{bound.radius, bound.radius};
-    path.boxes_.push_back(
-        detail::tighten_box(segment, {bound.center - reach, bound.center + reach}));
+    path.capsules_.push_back(detail::segment_capsule(segment));
+    boxes.push_back(detail::tighten_box(segment, {bound.center - reach, bound.center + reach}));
   }
   path.length_ = s;
   path.start_ = segments.front().evaluate_parameter(0.0);
   path.end_ = segments.back().evaluate_parameter(segments.back().parameter_end());
   path.segments_ = std::move(segments);
-  path.tree_.reserve(2 * path.boxes_.size() / leaf_size + 2);
-  path.build_tree(0, static_cast<std::uint32_t>(path.boxes_.size()));
+  path.tree_.reserve(2 * boxes.size() / leaf_size + 2);
+  path.build_tree(boxes, 0, static_cast<std::uint32_t>(boxes.size()));
   return path;
 }
 

@@ -46,6 +46,9 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
         settled = true;
         break;
       }
+      // Farther than the trusted distance from the hint's segment: the point jumped or left the
+      // path, and the global search (O(log N)) is cheaper than a long walk.
+      if (step == 0 && !(local.distance_m <= options.global_search_distance_m)) break;
       const int wanted = local.clamped_at_end ? 1 : (local.clamped_at_start ? -1 : 0);
       if (wanted == 0 || wanted == -direction) {
         settled = true;

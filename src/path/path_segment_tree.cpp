@@ -22,11 +22,24 @@
 namespace smoothsteer {
 namespace {
 
-//! Distance from `point` to `box` (0 inside).
-double box_distance(Vec2 point, const SegmentBox& box) noexcept {
+//! Squared distance from `point` to `box` (0 inside).
+double box_distance_squared(Vec2 point, const SegmentBox& box) noexcept {
   const double dx = std::max({box.lower.x - point.x, 0.0, point.x - box.upper.x});
   const double dy = std::max({box.lower.y - point.y, 0.0, point.y - box.upper.y});
-  return std::sqrt(dx * dx + dy * dy);
+  return dx * dx + dy * dy;
+}
+
+double distance_to_chord(Vec2 point, Vec2 from, Vec2 to) noexcept {
+  const Vec2 chord = to - from;
+  const double length_squared = dot(chord, chord);
+  const double along =
+      length_squared > 0.0 ? std::clamp(dot(point - from, chord) / length_squared, 0.0, 1.0) : 0.0;
+  return norm(point - (from + along * chord));
+}
+
+//! A lower bound of the distance from `point` to the segment inside `capsule`.
+double capsule_distance(Vec2 point, const SegmentCapsule& capsule) noexcept {
+  return distance_to_chord(point, capsule.from, capsule.to) - capsule.radius;
 }
 
 SegmentBox merge(const SegmentBox& a, const SegmentBox& b) noexcept {
@@ -65,19 +78,47 @@ SegmentBox detail::tighten_box(const PathSegment& segment, const SegmentBox& box
           {std::min(box.upper.x, hull.upper.x), std::min(box.upper.y, hull.upper.y)}};
 }
 
-std::uint32_t Path::build_tree(std::uint32_t first, std::uint32_t count) {
+SegmentCapsule detail::segment_capsule(const PathSegment& segment) noexcept {
+  const Vec2 start = segment.evaluate_parameter(0.0).position;
+  const Vec2 end = segment.evaluate_parameter(segment.parameter_end()).position;
+  if (segment.kind == PathSegment::Kind::line) return {start, end, 0.0};
+  if (segment.kind == PathSegment::Kind::arc) {
+    const double radius = 1.0 / std::abs(segment.curvature);
+    const double sweep = std::abs(segment.curvature) * segment.length;
+    if (sweep <= pi) return {start, end, radius * (1.0 - std::cos(0.5 * sweep))};
+    const Vec2 forward = unit_from_heading(segment.start_heading_rad);
+    const Vec2 center = segment.start + (1.0 / segment.curvature) * Vec2{-forward.y, forward.x};
+    return {center, center, radius};
+  }
+  const auto& x = segment.x_coefficients;
+  const auto& y = segment.y_coefficients;
+  const double t = segment.t_end;
+  const Vec2 b0{x[0], y[0]};
+  const Vec2 b1 = b0 + (t / 3.0) * Vec2{x[1], y[1]};
+  const Vec2 b2 = b1 + (t / 3.0) * Vec2{x[1], y[1]} + (t * t / 3.0) * Vec2{x[2], y[2]};
+  const Vec2 b3 =
+      b0 + t * Vec2{x[1], y[1]} + t * t * Vec2{x[2], y[2]} + t * t * t * Vec2{x[3], y[3]};
+  // The distance to the chord is convex, so its maximum over the control points' hull (which
+  // holds the curve) sits at a control point. Rounding margin: 1e-9 m.
+  const double deviation =
+      std::max(distance_to_chord(b1, b0, b3), distance_to_chord(b2, b0, b3)) + 1e-9;
+  return {b0, b3, deviation};
+}
+
+std::uint32_t Path::build_tree(const std::vector<SegmentBox>& boxes, std::uint32_t first,
+                               std::uint32_t count) {
   const auto index = static_cast<std::uint32_t>(tree_.size());
   tree_.push_back({});
   BoxNode node;
   node.first = first;
   node.count = count;
   if (count <= leaf_size) {
-    node.box = boxes_[first];
-    for (std::uint32_t i = first + 1; i < first + count; ++i) node.box = merge(node.box, boxes_[i]);
+    node.box = boxes[first];
+    for (std::uint32_t i = first + 1; i < first + count; ++i) node.box = merge(node.box, boxes[i]);
   } else {
     const std::uint32_t half = count / 2;
-    const std::uint32_t left = build_tree(first, half);
-    node.right = build_tree(first + half, count - half);
+    const std::uint32_t left = build_tree(boxes, first, half);
+    node.right = build_tree(boxes, first + half, count - half);
     node.box = merge(tree_[left].box, tree_[node.right].box);
   }
   tree_[index] = node;
@@ -105,39 +146,48 @@ PathProjection Path::project_global(Vec2 point, ProjectionHint& hint) const noex
   std::size_t best_index = ProjectionHint::none;
   SegmentProjection best;
 
-  std::array<std::uint32_t, max_stack> stack;
-  std::size_t depth = 0;
-  stack[depth++] = 0;
-  while (depth > 0) {
-    const std::uint32_t node_index = stack[--depth];
-    const BoxNode& node = tree_[node_index];
-    if (box_distance(point, node.box) > best_distance) continue;
-    if (node.count <= leaf_size) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-        if (box_distance(point, boxes_[i]) > best_distance) continue;
-        const PathSegment& segment = segments_[i];
-        const SegmentProjection local = segment.project_local(point, 0.5 * segment.parameter_end());
-        if (local.distance_m < best_distance) {
-          best_distance = local.distance_m;
-          best = local;
-          best_index = i;
+  auto consider = [&](std::uint32_t i) {
+    const PathSegment& segment = segments_[i];
+    const SegmentProjection local =
+        segment.project_local(point, 0.5 * segment.parameter_end(), /*exhaustive=*/true,
+                              /*with_arc_length=*/false);
+    if (local.distance_m < best_distance) {
+      best_distance = local.distance_m;
+      best = local;
+      best_index = i;
+    }
+  };
+  auto segment_bound_squared = [&](std::uint32_t i) {
+    const double bound = std::max(capsule_distance(point, capsules_[i]), 0.0);
+    return bound * bound;
+  };
+  // Depth first, nearer child first, pruned by the box and capsule lower bounds. (A best-first
+  // priority queue visits slightly fewer nodes but cost 1.8x more per query here.)
+  auto depth_first = [&](std::uint32_t root) {
+    std::array<std::uint32_t, max_stack> stack;
+    std::size_t depth = 0;
+    stack[depth++] = root;
+    while (depth > 0) {
+      const BoxNode& node = tree_[stack[--depth]];
+      if (box_distance_squared(point, node.box) > best_distance * best_distance) continue;
+      if (node.count <= leaf_size) {
+        for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+          if (segment_bound_squared(i) <= best_distance * best_distance) consider(i);
         }
+        continue;
       }
-      continue;
+      const std::uint32_t left = static_cast<std::uint32_t>(&node - tree_.data()) + 1;
+      const bool left_nearer = box_distance_squared(point, tree_[left].box) <=
+                               box_distance_squared(point, tree_[node.right].box);
+      if (depth + 2 > max_stack) continue;  // unreachable: the depth is ~log2(N)
+      stack[depth++] = left_nearer ? node.right : left;
+      stack[depth++] = left_nearer ? left : node.right;
     }
-    const std::uint32_t left = node_index + 1;  // depth-first layout
-    const double left_distance = box_distance(point, tree_[left].box);
-    const double right_distance = box_distance(point, tree_[node.right].box);
-    // Push the farther child first so that the nearer one is searched first.
-    const bool left_first = left_distance <= right_distance;
-    const std::uint32_t near_child = left_first ? left : node.right;
-    const std::uint32_t far_child = left_first ? node.right : left;
-    if (std::max(left_distance, right_distance) <= best_distance && depth < max_stack) {
-      stack[depth++] = far_child;
-    }
-    if (std::min(left_distance, right_distance) <= best_distance && depth < max_stack) {
-      stack[depth++] = near_child;
-    }
+  };
+
+  depth_first(0);
+  if (best_index != ProjectionHint::none) {  // the arc length only for the winner
+    best.local_arc_length_m = segments_[best_index].arc_length_at(best.parameter);
   }
 
   if (best_index == ProjectionHint::none) {

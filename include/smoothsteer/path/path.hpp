@@ -120,8 +120,10 @@ class Path {
 
   //! Sets arc lengths, bounds and cached end poses; the segments are already validated.
   static Path assemble(std::vector<PathSegment> segments, bool closed);
-  //! Builds tree_ over [first, first + count) and returns the node's index.
-  std::uint32_t build_tree(std::uint32_t first, std::uint32_t count);
+  //! Builds tree_ over segments [first, first + count), whose boxes are `boxes`, and returns
+  //! the node's index.
+  std::uint32_t build_tree(const std::vector<SegmentBox>& boxes, std::uint32_t first,
+                           std::uint32_t count);
   PathProjection project_global(Vec2 point, ProjectionHint& hint) const noexcept;
   //! Distance from `point` to the start (start = true) or end extension half-line of an open
   //! path, or infinity if its closest point is not strictly on the half-line.
@@ -136,7 +138,7 @@ class Path {
                                    ProjectionHint& hint) const noexcept;
 
   std::vector<PathSegment> segments_;
-  std::vector<SegmentBox> boxes_;  //!< one per segment, contains it
+  std::vector<SegmentCapsule> capsules_;  //!< one per segment, contains it
   std::vector<BoxNode> tree_;
   PathPoint start_;  //!< pose at s = 0, for the start extension
   PathPoint end_;    //!< pose at s = length(), for the end extension

@@ -34,6 +34,14 @@ struct SegmentBox {
   Vec2 upper;
 };
 
+//! All points within `radius` of the line segment [from, to] [m]: a tight container of a short
+//! curve (its chord and the largest deviation from it), whose distance is a cheap lower bound.
+struct SegmentCapsule {
+  Vec2 from;
+  Vec2 to;
+  double radius = 0.0;
+};
+
 //! A plain segment record. Lines and arcs are described by their start pose and curvature
 //! (local parameter = local arc length); cubics by polynomial coefficients
 //! x(t) = x[0] + x[1] t + x[2] t^2 + x[3] t^3 (same for y), t in [0, t_end], which the spline
