@@ -13,6 +13,11 @@
 int main(int argc, char** argv) {
   using namespace smoothsteer;
   try {
+    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {  // "--help" is no trace file name
+      std::printf("usage: smoothsteer_demo [TRACE.csv]   (default demo_trace.csv)\n");
+      return argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") ? 0
+                                                                                             : 1;
+    }
     const std::string trace_path = argc > 1 ? argv[1] : "demo_trace.csv";
     auto path = std::make_shared<const Path>(PathBuilder({0.0, 0.0}, 0.0)
                                                  .line(30.0)

@@ -6,8 +6,9 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev coinor-libipopt-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   python3-numpy python3-matplotlib
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

@@ -4,10 +4,13 @@
 #   2. the full suite (ci preset: Release, -Werror),
 #   3. a consumer project built against the installed package (find_package(smoothsteer)), with
 #      the core and the tuning module,
-#   4. the standard-library core alone (-DSMOOTHSTEER_CORE_ONLY=ON: no yaml-cpp, Ipopt, Eigen),
-#   5. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer (asan preset).
+#   4. the standard-library core alone (-DSMOOTHSTEER_CORE_ONLY=ON: no yaml-cpp, Ipopt, Eigen,
+#      Boost),
+#   5. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow
+#      included (asan preset, clang-14),
+#   6. every libFuzzer target for a bounded time from the seed corpus (scripts/fuzz.sh).
 # SMOOTHSTEER_PROPERTY_CASES sets the number of randomized cases per property (default 40; CI
-# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips step 5.
+# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips steps 5 and 6.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -39,4 +42,5 @@ if [[ "${SMOOTHSTEER_SKIP_ASAN:-0}" != "1" ]]; then
   # The sanitizers run the suite at the default case count: they look for memory errors and
   # undefined behaviour, not for rare inputs.
   SMOOTHSTEER_PROPERTY_CASES= ctest --preset asan -j"$jobs"
+  bash scripts/fuzz.sh
 fi

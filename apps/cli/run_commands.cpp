@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "plotter.hpp"
+#include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/io/run_output.hpp"
 #include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/sweep.hpp"
@@ -33,9 +35,10 @@ struct RunOptions {
 };
 
 void run(const RunOptions& options) {
+  io::OutputDirectory out(options.out, "--out");
+  const std::string script = options.plot ? find_plot_script() : std::string();
   const io::Scenario scenario = io::load_scenario(options.scenario, options.overrides);
-  const io::RunResult result = io::run_scenario(scenario);
-  io::write_run_outputs(options.out, scenario, result);
+  const io::RunResult result = io::run_scenario(scenario, out);
   const Metrics& m = result.metrics;
   std::printf("%s: %d steps, stop: %s, reached: %s (t = %.2f s, s = %.2f m)\n",
               scenario.name.c_str(), m.steps, result.simulation.stop_reason.c_str(),
@@ -45,18 +48,18 @@ void run(const RunOptions& options) {
       "m\n",
       m.max_abs_rear_error_m, m.max_abs_front_error_m, m.max_abs_lead_error_after_reaching_m,
       m.max_abs_front_error_after_reaching_m, m.max_abs_rear_error_after_reaching_m);
-  std::printf(
-      "  max side slip %.4f rad, bound violations %d; wrote %s/trace.csv and summary.json\n",
-      m.max_abs_side_slip_rad, m.bound_violations, options.out.c_str());
-  if (result.simulation.status != Status::ok || result.simulation.non_finite) {
-    throw std::runtime_error("run stopped early: " + result.simulation.stop_reason);
+  std::printf("  max side slip %.4f rad, bound violations %d\n", m.max_abs_side_slip_rad,
+              m.bound_violations);
+  const bool ok = result.simulation.status == Status::ok && !result.simulation.non_finite;
+  if (options.plot && ok) {
+    run_plotter(script, out.file("trace.csv").string(), out.file("trace.png").string());
   }
-  if (options.plot) {
-    const char* script_env = std::getenv("SMOOTHSTEER_PLOT_SCRIPT");
-    const std::string script = script_env ? script_env : "scripts/plot_trace.py";
-    const std::string command = "/usr/bin/python3 '" + script + "' '" + options.out +
-                                "/trace.csv' '" + options.out + "/trace.png'";
-    if (std::system(command.c_str()) != 0) throw std::runtime_error("plotting failed: " + command);
+  // Published even when the run stopped early: the trace shows where and why.
+  out.commit();
+  std::printf("wrote %s/trace.csv and summary.json%s\n", out.target().c_str(),
+              options.plot && ok ? " and trace.png" : "");
+  if (!ok) {
+    throw std::runtime_error("run stopped early: " + result.simulation.stop_reason);
   }
 }
 
@@ -99,6 +102,11 @@ void sweep(const SweepOptions& options) {
     sets.insert(sets.end(), grid.begin(), grid.end());
   }
   if (sets.empty()) throw std::runtime_error("sweep: give --vary key=v1,v2,... and/or --paper");
+  if (sets.size() > io::max_sweep_rows) {
+    throw std::runtime_error("sweep: " + std::to_string(sets.size()) + " runs; at most " +
+                             std::to_string(io::max_sweep_rows));
+  }
+  io::require_regular_file_or_absent(options.out, "--out");
   const auto rows = io::run_sweep(options.scenario, options.overrides, sets, options.jobs,
                                   [](int done, int total) {
                                     std::fprintf(stderr, "\rsweep: %d/%d runs done", done, total);
@@ -106,10 +114,13 @@ void sweep(const SweepOptions& options) {
                                   });
   const fs::path out(options.out);
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  io::write_file_atomically(options.out, io::sweep_csv(rows));
-  int failed = 0;
+  io::write_file_atomically(options.out, io::sweep_csv(rows), "--out");
+  std::size_t failed = 0;
   for (const auto& row : rows) failed += row.ok ? 0 : 1;
-  std::printf("wrote %s (%zu runs, %d failed)\n", options.out.c_str(), rows.size(), failed);
+  std::printf("wrote %s (%zu runs, %zu failed)\n", options.out.c_str(), rows.size(), failed);
+  if (failed == rows.size()) {
+    throw std::runtime_error("sweep: every run failed; first error: " + rows.front().error);
+  }
 }
 
 }  // namespace

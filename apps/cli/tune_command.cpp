@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/schedule_files.hpp"
 
@@ -27,6 +28,9 @@ struct TuneArguments {
   TuningOptions options;
 };
 
+//! Most speeds one schedule may hold.
+constexpr int max_speeds = 10'000;
+
 std::vector<double> parse_speeds(const std::string& text) {
   double first = 0, last = 0, step = 0;
   char a = 0, b = 0;
@@ -35,6 +39,18 @@ std::vector<double> parse_speeds(const std::string& text) {
     in.clear();
     throw std::invalid_argument("--speeds '" + text +
                                 "' must be FIRST:LAST:STEP in m/s, e.g. 1:30:0.5");
+  }
+  // Count before building the grid: 1:1e300:1e-300 would convert inf to an integer
+  // (issue 12, defect 7).
+  if (!std::isfinite(first) || !std::isfinite(last) || !std::isfinite(step) || !(step > 0.0)) {
+    throw std::invalid_argument("--speeds '" + text + "': FIRST, LAST and STEP must be finite, " +
+                                "STEP > 0");
+  }
+  const double count = (last - first) / step + 1.0;
+  if (!(count >= 1.0) || count > max_speeds) {
+    throw std::invalid_argument(
+        "--speeds '" + text + "': gives " + std::to_string(static_cast<long double>(count)) +
+        " speeds; between 1 and " + std::to_string(max_speeds) + " are allowed");
   }
   return speed_grid(first, last, step);
 }
@@ -68,6 +84,8 @@ void run_tune(const TuneArguments& arguments) {
   TuningOptions options = arguments.options;
   options.order = arguments.order;
   const std::vector<double> speeds = parse_speeds(arguments.speeds);
+  // The schedule writer renames its file into place: never over a device or a link.
+  io::require_regular_file_or_absent(arguments.out, "--out");
   StaticMapOptions map_options;
   map_options.max_steering_angle_rad =
       std::max(map_options.max_steering_angle_rad, std::min(1.49, vehicle.max_steering_angle_rad));

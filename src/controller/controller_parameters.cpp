@@ -73,7 +73,7 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
   if (p.max_substeps < 1 || p.max_substeps > 10000) {
     return fail(text("max_substeps"), p.max_substeps, text("must be in [1, 10000]"));
   }
-  // Invariant sets down the chain (paper-notes §2): kbar_i lambda_i < 1 for every wheel.
+  // Invariant sets down the chain (paper_notes §2): kbar_i lambda_i < 1 for every wheel.
   double kbar = p.lead_curvature_bound;
   for (int i = p.order; i >= 1; --i) {
     const double product = kbar * p.wheelbases_m[static_cast<std::size_t>(i - 1)];

@@ -126,7 +126,7 @@ double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
 
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
     Vec2 rear_position, double rear_travel_heading) noexcept {
-  // Lead-wheel state from projecting its own position (paper Sec. II end, notes §6).
+  // Lead-wheel state from projecting its own position (paper Sec. II end, paper_notes §6).
   const int n = parameters_.order;
   ChainGeometry geometry;
   chain_geometry(rear_position, rear_travel_heading, angles_, parameters_.wheelbases_m.data(), n,

@@ -31,7 +31,7 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
     const double lambda = parameters.wheelbases_m[index - 1];
     const double product = kbar * lambda;
     bounds.angle[index - 1] = std::asin(product);                             // eq. (kappaf_constr)
-    bounds.curvature[index - 1] = kbar / std::sqrt(1.0 - product * product);  // paper-notes §2
+    bounds.curvature[index - 1] = kbar / std::sqrt(1.0 - product * product);  // paper_notes §2
   }
   bounds.steering_angle_rad = std::atan(parameters.vehicle_wheelbase_m * bounds.curvature[0]);
   if (n == 0) {

@@ -1,8 +1,12 @@
 #include "smoothsteer/io/config_section.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+
+#include "smoothsteer/io/text_checks.hpp"
 
 namespace smoothsteer::io {
 namespace {
@@ -24,7 +28,7 @@ std::string show(const YAML::Node& node) {
 }  // namespace
 
 bool Range::contains(double x) const {
-  if (!std::isfinite(x)) return false;
+  if (!std::isfinite(x) || std::abs(x) > max_input_magnitude) return false;
   const bool above = min_open ? x > min : x >= min;
   const bool below = max_open ? x < max : x <= max;
   return above && below;
@@ -36,9 +40,16 @@ std::string Range::describe() const {
     return std::string("must be in ") + (min_open ? "(" : "[") + format_number(min) + ", " +
            format_number(max) + (max_open ? ")" : "]");
   }
-  if (has_min) return std::string("must be ") + (min_open ? "> " : ">= ") + format_number(min);
-  if (has_max) return std::string("must be ") + (max_open ? "< " : "<= ") + format_number(max);
-  return "must be finite";
+  const std::string cap = format_number(max_input_magnitude);
+  if (has_min) {
+    return std::string("must be ") + (min_open ? "> " : ">= ") + format_number(min) +
+           " and <= " + cap;
+  }
+  if (has_max) {
+    return std::string("must be ") + (max_open ? "< " : "<= ") + format_number(max) + " and >= -" +
+           cap;
+  }
+  return "must be finite with magnitude <= " + cap;
 }
 
 ConfigSection::ConfigSection(YAML::Node node, std::string key_path, std::string file)
@@ -68,7 +79,10 @@ void ConfigSection::fail(const std::string& key, const std::string& reason) cons
 }
 
 bool ConfigSection::has(const std::string& key) const {
-  return node_ && node_.IsMap() && node_[key] && !node_[key].IsNull();
+  if (!node_ || !node_.IsMap() || !node_[key]) return false;
+  // "key: ~" or "key:" used to mean the default silently (issue 12, defect 6).
+  if (node_[key].IsNull()) fail(key, "has no value (~ or empty); give a value or remove the key");
+  return true;
 }
 
 double ConfigSection::required_number(const std::string& key, Range range) {
@@ -82,14 +96,9 @@ double ConfigSection::number(const std::string& key, double default_value, Range
   if (has(key)) {
     const YAML::Node n = node_[key];
     if (!n.IsScalar()) fail(key, "expected a number, got " + show(n));
-    const std::string& text = n.Scalar();
-    std::size_t used = 0;
-    try {
-      value = std::stod(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != text.size() || text.empty()) fail(key, "expected a number, got '" + text + "'");
+    const std::optional<double> parsed = parse_number(n.Scalar());
+    if (!parsed) fail(key, "expected a number, got '" + n.Scalar() + "'");
+    value = *parsed;
   }
   if (!range.contains(value))
     fail(key, "value " + format_number(value) + " out of range: " + range.describe());
@@ -171,10 +180,12 @@ std::vector<double> ConfigSection::numbers(const std::string& key,
     if (!n.IsSequence()) fail(key, "expected a list of numbers, got " + show(n));
     values.clear();
     for (std::size_t i = 0; i < n.size(); ++i) {
-      double x = 0.0;
-      if (!n[i].IsScalar() || !YAML::convert<double>::decode(n[i], x)) {
+      const std::optional<double> parsed =
+          n[i].IsScalar() ? parse_number(n[i].Scalar()) : std::nullopt;
+      if (!parsed) {
         fail(key, "element " + std::to_string(i) + ": expected a number, got " + show(n[i]));
       }
+      const double x = *parsed;
       if (!range.contains(x)) {
         fail(key, "element " + std::to_string(i) + " = " + format_number(x) +
                       " out of range: " + range.describe());
@@ -223,15 +234,84 @@ void ConfigSection::finish() const {
   }
 }
 
+namespace {
+
+//! Largest YAML file read [bytes]; scenario and vehicle files are a few kB.
+constexpr std::uintmax_t max_yaml_file_bytes = 16u << 20;
+
+std::string key_text(const YAML::Node& key) {
+  return key.IsScalar() ? key.Scalar() : std::string("<non-scalar key>");
+}
+
+//! yaml-cpp keeps duplicate keys and returns the first on lookup; reject them, and keys that
+//! are not plain strings.
+void reject_duplicate_keys(const YAML::Node& node, const std::string& path,
+                           const std::string& file) {
+  if (node.IsMap()) {
+    std::map<std::string, int> lines;
+    for (const auto& entry : node) {
+      const std::string key = key_text(entry.first);
+      const std::string full = path.empty() ? key : path + "." + key;
+      const int line = entry.first.Mark().line + 1;
+      if (!entry.first.IsScalar()) {
+        throw ConfigError(file + ": key '" + full + "' (line " + std::to_string(line) +
+                          "): keys must be plain strings");
+      }
+      const auto [previous, inserted] = lines.emplace(key, line);
+      if (!inserted) {
+        throw ConfigError(file + ": key '" + full + "' (line " + std::to_string(line) +
+                          "): duplicate key (first given at line " +
+                          std::to_string(previous->second) + ")");
+      }
+      reject_duplicate_keys(entry.second, full, file);
+    }
+  } else if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      reject_duplicate_keys(node[i], path + "[" + std::to_string(i) + "]", file);
+    }
+  }
+}
+
+}  // namespace
+
 YAML::Node load_yaml_file(const std::string& file) {
-  std::ifstream in(file);
+  std::error_code error;
+  const auto status = std::filesystem::status(file, error);
+  if (!std::filesystem::exists(status))
+    throw ConfigError(file + ": cannot open file (no such file)");
+  if (std::filesystem::is_directory(status)) {
+    throw ConfigError(file + ": is a directory, expected a YAML file");
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    throw ConfigError(file + ": not a regular file, expected a YAML file");
+  }
+  if (std::filesystem::file_size(file, error) > max_yaml_file_bytes) {
+    throw ConfigError(file + ": larger than " + std::to_string(max_yaml_file_bytes) +
+                      " bytes; not a scenario or vehicle file");
+  }
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw ConfigError(file + ": cannot open file");
+  std::ostringstream content;
+  content << in.rdbuf();
+  const std::string text = content.str();
+  return parse_yaml_text(text, file);
+}
+
+YAML::Node parse_yaml_text(const std::string& text, const std::string& file) {
   try {
-    return YAML::Load(in);
+    require_utf8(text, file);
+  } catch (const std::runtime_error& error) {
+    throw ConfigError(error.what());
+  }
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
   } catch (const YAML::Exception& error) {
     throw ConfigError(file + ": malformed YAML at line " + std::to_string(error.mark.line + 1) +
                       ", column " + std::to_string(error.mark.column + 1) + ": " + error.msg);
   }
+  reject_duplicate_keys(root, "", file);
+  return root;
 }
 
 }  // namespace smoothsteer::io

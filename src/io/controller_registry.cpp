@@ -15,23 +15,31 @@
 namespace smoothsteer::io {
 namespace {
 
-//! The paper's controller (Sec. II-III). Defaults follow Sec. IV-A: n = 2 with the fictive
-//! wheelbase of eq. (cornering_constr), the lead wheel on the path, k_rob = 0.3 (notes §5).
+//! The paper's controller (Sec. II-III). Defaults are ControllerParameters' (n = 2, k_rob = 0.3,
+//! the rear axle on curved paths); the wheelbases follow Sec. IV-A: the fictive wheelbase of
+//! eq. (cornering_constr).
 //! Keys shared by the fixed and the scheduled lead-wheel controller.
 void read_law_options(ConfigSection& c, ControllerParameters& p) {
-  p.k_rob = c.number("k_rob", 0.3, {0.0, 1.0, false, true});
-  p.boundary_layer = c.number("boundary_layer", 0.0, Range::non_negative());
-  p.actuator_delay_s =
-      c.number("actuator_delay_s", 0.0, {0.0, ControllerParameters::max_actuator_delay_s});
-  p.approach_angle_rad = c.number("approach_angle_rad", std::numbers::pi / 2.0,
+  // Defaults come from the C++ struct: a scenario key and its field cannot disagree.
+  const ControllerParameters defaults;
+  p.k_rob = c.number("k_rob", defaults.k_rob, {0.0, 1.0, false, true});
+  p.boundary_layer = c.number("boundary_layer", defaults.boundary_layer, Range::non_negative());
+  p.actuator_delay_s = c.number("actuator_delay_s", defaults.actuator_delay_s,
+                                {0.0, ControllerParameters::max_actuator_delay_s});
+  p.approach_angle_rad = c.number("approach_angle_rad", defaults.approach_angle_rad,
                                   {0.0, std::numbers::pi / 2.0, true, false});
-  const std::string surface = c.text("surface", "global", {"global", "paper"});
+  const bool paper_surface = defaults.surface == SlidingSurface::paper;
+  const std::string surface =
+      c.text("surface", paper_surface ? "paper" : "global", {"global", "paper"});
   p.surface = surface == "paper" ? SlidingSurface::paper : SlidingSurface::global;
-  const std::string target = c.text("cornering_target", "lead_wheel", {"lead_wheel", "rear_axle"});
+  const bool lead_target = defaults.cornering_target == CorneringTarget::lead_wheel;
+  const std::string target = c.text("cornering_target", lead_target ? "lead_wheel" : "rear_axle",
+                                    {"lead_wheel", "rear_axle"});
   p.cornering_target =
       target == "rear_axle" ? CorneringTarget::rear_axle : CorneringTarget::lead_wheel;
-  p.max_substep_fraction = c.number("max_substep_fraction", 0.1, {0.0, 1.0, true, false});
-  p.max_substeps = c.integer("max_substeps", 64, 1, 10000);
+  p.max_substep_fraction =
+      c.number("max_substep_fraction", defaults.max_substep_fraction, {0.0, 1.0, true, false});
+  p.max_substeps = c.integer("max_substeps", defaults.max_substeps, 1, 10000);
 }
 
 std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
@@ -40,8 +48,10 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
   ControllerParameters p;
   const double wheelbase = vehicle.wheelbase_m();
   p.vehicle_wheelbase_m = wheelbase;
-  p.order = c.integer("order", 2, 0, ControllerParameters::max_order);
-  p.lead_curvature_bound = c.number("lead_curvature_bound", 0.2, Range::positive());
+  const ControllerParameters defaults;
+  p.order = c.integer("order", defaults.order, 0, ControllerParameters::max_order);
+  p.lead_curvature_bound =
+      c.number("lead_curvature_bound", defaults.lead_curvature_bound, Range::positive());
   read_law_options(c, p);
   // Wheelbases: explicit list, or the paper's choice: n = 1 -> lambda = lambda_veh (eq. ext1);
   // n = 2 -> lambda = sqrt(lambda_veh^2 - lambda_l^2) (eq. cornering_constr).
@@ -125,6 +135,7 @@ std::unique_ptr<SteeringController> make_controller(
   ConfigSection c(section, key_path, file);
   c.set_overridden_keys(std::move(overridden_keys));
   const std::vector<std::string> types = controller_types();
+  if (!c.has("type")) c.fail("type", "is required (e.g. controller: {type: lead_wheel})");
   const std::string type = c.text("type", "lead_wheel", types);
   ControllerFactory factory;
   {

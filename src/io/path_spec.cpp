@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/io/waypoint_csv.hpp"
 #include "smoothsteer/path/path_builder.hpp"
 
 namespace smoothsteer::io {
@@ -17,43 +18,13 @@ Vec2 point(ConfigSection& c, const std::string& key, Vec2 fallback) {
   return {xy[0], xy[1]};
 }
 
-//! Falcone et al. 2007 double lane change (paper-notes §8): Y(X) with the published constants.
+//! Falcone et al. 2007 double lane change (paper_notes §8): Y(X) with the published constants.
 double lane_change_y(double x) {
   const double shape = 2.4, dx1 = 25.0, dx2 = 21.95, dy1 = 4.05, dy2 = 5.7;
   const double xs1 = 27.19, xs2 = 56.46;
   const double z1 = shape / dx1 * (x - xs1) - shape / 2.0;
   const double z2 = shape / dx2 * (x - xs2) - shape / 2.0;
   return dy1 / 2.0 * (1.0 + std::tanh(z1)) - dy2 / 2.0 * (1.0 + std::tanh(z2));
-}
-
-std::vector<Vec2> read_waypoint_csv(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw ConfigError(file + ": cannot open waypoint file");
-  std::vector<Vec2> points;
-  std::string line;
-  int number = 0;
-  bool first = true;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    if (first && line.find_first_of("xXyY") != std::string::npos) {
-      first = false;
-      continue;  // header line "x,y"
-    }
-    first = false;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
-    Vec2 p;
-    std::string rest;
-    if (!(fields >> p.x >> p.y) || (fields >> rest) || !std::isfinite(p.x) || !std::isfinite(p.y)) {
-      throw ConfigError(file + ": line " + std::to_string(number) +
-                        ": expected two finite numbers 'x,y', got '" + line + "'");
-    }
-    points.push_back(p);
-  }
-  if (points.size() < 2) throw ConfigError(file + ": needs at least 2 waypoints");
-  return points;
 }
 
 }  // namespace
@@ -107,9 +78,17 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
       const double spacing = c.number("spacing_m", 1.0, {0.05, 10.0});
       if (!(x_end > x_start + 2.0 * spacing))
         c.fail("x_end_m", "must exceed x_start_m by 2 spacings");
+      // Counted, not accumulated: x += spacing stalls once x >> spacing (issue 12, defect 3).
+      const double count = std::floor((x_end - x_start) / spacing + 1e-9) + 1.0;
+      if (count > static_cast<double>(max_waypoints)) {
+        c.fail("x_end_m", "gives " + std::to_string(static_cast<long long>(count)) +
+                              " samples at spacing_m; at most " + std::to_string(max_waypoints));
+      }
       std::vector<Vec2> points;
-      for (double x = x_start; x <= x_end + 1e-9; x += spacing)
+      for (long i = 0; i < static_cast<long>(count); ++i) {
+        const double x = x_start + static_cast<double>(i) * spacing;
         points.push_back({x, lane_change_y(x)});
+      }
       return std::make_shared<const Path>(Path::from_waypoints(points));
     }
     if (type == "waypoints") {
@@ -118,15 +97,18 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
       std::vector<Vec2> points;
       YAML::Node resolved(YAML::NodeType::Sequence);
       for (std::size_t i = 0; i < list.size(); ++i) {
-        double x = 0.0, y = 0.0;
-        if (!list[i].IsSequence() || list[i].size() != 2 ||
-            !YAML::convert<double>::decode(list[i][0], x) ||
-            !YAML::convert<double>::decode(list[i][1], y) || !std::isfinite(x) ||
-            !std::isfinite(y)) {
-          c.fail("points",
-                 "element " + std::to_string(i) + ": expected [x, y] with two finite numbers");
+        const bool pair = list[i].IsSequence() && list[i].size() == 2 && list[i][0].IsScalar() &&
+                          list[i][1].IsScalar();
+        const auto x = pair ? parse_number(list[i][0].Scalar()) : std::nullopt;
+        const auto y = pair ? parse_number(list[i][1].Scalar()) : std::nullopt;
+        if (!x || !y || std::abs(*x) > max_input_magnitude || std::abs(*y) > max_input_magnitude) {
+          c.fail("points", "element " + std::to_string(i) +
+                               ": expected [x, y] with two numbers of magnitude <= 1e9");
         }
-        points.push_back({x, y});
+        if (points.size() == max_waypoints) {
+          c.fail("points", "more than " + std::to_string(max_waypoints) + " waypoints");
+        }
+        points.push_back({*x, *y});
         resolved.push_back(list[i]);
       }
       c.store("points", resolved);

@@ -1,60 +1,47 @@
 #include "smoothsteer/io/run_output.hpp"
 
-#include <atomic>
-#include <cstdio>
-#include <filesystem>
+#include <cmath>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
-#include <thread>
+
+#include "smoothsteer/io/trace_csv.hpp"
 
 namespace smoothsteer::io {
+namespace {
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  static std::atomic<unsigned long> counter{0};
-  std::ostringstream name;
-  name << path << ".tmp." << std::hash<std::thread::id>{}(std::this_thread::get_id()) << "."
-       << counter++;
-  const std::string temporary = name.str();
-  {
-    std::ofstream file(temporary, std::ios::binary);
-    if (!file) throw std::runtime_error("cannot open '" + temporary + "' for writing");
-    file << content;
-    file.flush();
-    if (!file) {
-      file.close();
-      std::remove(temporary.c_str());
-      throw std::runtime_error("failed while writing '" + temporary + "'");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot rename '" + temporary + "' to '" + path + "'");
-  }
+//! Counts are written as JSON integers, every other metric as a number (null if not finite).
+bool is_count(const std::string& name) {
+  const std::string suffix = "_violations";
+  return name == "steps" || name == "non_finite_values" ||
+         (name.size() > suffix.size() &&
+          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0);
 }
 
-const std::vector<std::string>& trace_columns() {
-  static const std::vector<std::string> columns(trace_column_names().begin(),
-                                                trace_column_names().end());
-  return columns;
+void write_summary(const std::filesystem::path& file, const Scenario& scenario,
+                   const RunResult& result) {
+  // Text was validated as UTF-8 when read; `replace` keeps a stray byte from failing the dump.
+  const std::string text =
+      summary_json(scenario, result).dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::ofstream out(file, std::ios::binary);
+  out << text << '\n';
+  out.flush();
+  if (!out) throw std::runtime_error(file.string() + ": writing the summary failed");
 }
 
-std::string trace_csv(const SimulationResult& result) {
-  std::ostringstream out;
-  out.precision(9);
-  const auto& columns = trace_columns();
-  for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
-  out << '\n';
-  for (const TraceSample& s : result.trace) {
-    const auto values = trace_row(s);
-    for (std::size_t i = 0; i < std::size(values); ++i) out << (i ? "," : "") << values[i];
-    out << '\n';
-  }
-  return out.str();
+}  // namespace
+
+std::string tool_version() {
+  return SMOOTHSTEER_VERSION;
+}
+
+std::string tool_commit() {
+  return SMOOTHSTEER_COMMIT;
 }
 
 nlohmann::json summary_json(const Scenario& scenario, const RunResult& result) {
   nlohmann::json summary;
+  summary["tool"] = {
+      {"name", "smoothsteer"}, {"version", tool_version()}, {"commit", tool_commit()}};
   summary["scenario"] = scenario.name;
   summary["scenario_file"] = scenario.file;
   summary["description"] = scenario.description;
@@ -64,10 +51,17 @@ nlohmann::json summary_json(const Scenario& scenario, const RunResult& result) {
   summary["vehicle_source"] = scenario.vehicle_source;
   summary["status"] = to_string(result.simulation.status);
   summary["stop_reason"] = result.simulation.stop_reason;
+  summary["model_evaluations"] = result.simulation.model_evaluations;
   summary["overrides"] = scenario.overrides;
   nlohmann::json metrics = nlohmann::json::object();
   for (const auto& [name, value] : metric_values(result.metrics)) {
-    metrics[name] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+    if (!std::isfinite(value)) {
+      metrics[name] = nullptr;
+    } else if (is_count(name)) {
+      metrics[name] = static_cast<long long>(value);
+    } else {
+      metrics[name] = value;
+    }
   }
   metrics["reached"] = result.metrics.reached;
   summary["metrics"] = metrics;
@@ -75,13 +69,35 @@ nlohmann::json summary_json(const Scenario& scenario, const RunResult& result) {
   return summary;
 }
 
+RunResult run_scenario(const Scenario& scenario, OutputDirectory& out) {
+  const std::unique_ptr<SteeringController> controller = make_controller(scenario);
+  const std::unique_ptr<VehicleModel> model = make_vehicle_model(scenario);
+  TraceCsvWriter trace(out.file("trace.csv").string());
+  MetricsAccumulator metrics(scenario.metrics);
+  RunResult result;
+  result.simulation =
+      simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
+               scenario.start, *controller, [&](const TraceSample& sample) {
+                 trace.write(sample);
+                 metrics.add(sample);
+               });
+  trace.close();
+  result.metrics = metrics.result();
+  result.controller_name = controller->name();
+  write_summary(out.file("summary.json"), scenario, result);
+  return result;
+}
+
 void write_run_outputs(const std::string& directory, const Scenario& scenario,
                        const RunResult& result) {
-  std::filesystem::create_directories(directory);
-  const std::filesystem::path dir(directory);
-  write_file_atomically((dir / "trace.csv").string(), trace_csv(result.simulation));
-  write_file_atomically((dir / "summary.json").string(),
-                        summary_json(scenario, result).dump(2) + "\n");
+  OutputDirectory out(directory, "output directory");
+  {
+    TraceCsvWriter trace(out.file("trace.csv").string());
+    for (const TraceSample& sample : result.simulation.trace) trace.write(sample);
+    trace.close();
+  }
+  write_summary(out.file("summary.json"), scenario, result);
+  out.commit();
 }
 
 }  // namespace smoothsteer::io

@@ -67,12 +67,8 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
       throw ConfigError(file + ": override '" + entry + "': expected key.path=value");
     }
     const std::string key = entry.substr(0, equals);
-    YAML::Node value;
-    try {
-      value = YAML::Load(entry.substr(equals + 1));
-    } catch (const YAML::Exception& error) {
-      throw ConfigError(file + ": override '" + entry + "': malformed value: " + error.msg);
-    }
+    const YAML::Node value =
+        parse_yaml_text(entry.substr(equals + 1), file + ": override '" + entry + "': value");
     std::vector<std::string> parts;
     std::size_t begin = 0;
     while (true) {
@@ -122,7 +118,11 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   YAML::Node merged(YAML::NodeType::Map);
   std::string vehicle_label = file;
   if (vehicle_node && vehicle_node["file"]) {
-    std::filesystem::path vehicle_file(vehicle_node["file"].as<std::string>());
+    ConfigSection vehicle_keys(vehicle_node, "vehicle", file);
+    vehicle_keys.set_overridden_keys(overridden);
+    const std::string name = vehicle_keys.text("file", "");
+    if (name.empty()) vehicle_keys.fail("file", "expected the name of a vehicle YAML file");
+    std::filesystem::path vehicle_file(name);
     if (vehicle_file.is_relative()) vehicle_file = std::filesystem::path(directory) / vehicle_file;
     const YAML::Node from_file = load_yaml_file(vehicle_file.string());
     if (!from_file.IsMap()) throw ConfigError(vehicle_file.string() + ": expected a mapping");
@@ -165,6 +165,13 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   p.control_period_s = sim.number("control_period_s", p.control_period_s, {0.0, 1.0, true, false});
   p.substep_s = sim.number("substep_s", p.substep_s, {0.0, 0.01, true, false});
   p.duration_s = sim.number("duration_s", p.duration_s, {0.0, 3600.0, true, false});
+  const std::string integrator =
+      sim.text("integrator", "fixed_rk4", {"fixed_rk4", "rkf78", "dopri5"});
+  p.integrator = integrator == "fixed_rk4" ? PlantIntegrator::fixed_rk4
+                 : integrator == "dopri5"  ? PlantIntegrator::dopri5
+                                           : PlantIntegrator::rkf78;
+  p.integrator_tolerance =
+      sim.number("integrator_tolerance", p.integrator_tolerance, {1e-14, 1e-3});
   p.stop_at_path_end = sim.boolean("stop_at_path_end", p.stop_at_path_end);
   p.stop_beyond_path_end_m = sim.number("stop_beyond_path_end_m", p.stop_beyond_path_end_m);
   p.matched_disturbance = sim.number("matched_disturbance", 0.0, {-1.0, 1.0});
@@ -198,6 +205,8 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   s.metrics.steering_angle_limit_rad = s.vehicle.max_steering_angle_rad;
   s.metrics.steering_rate_limit_radps = s.vehicle.max_steering_rate_radps;
 
+  // Required (docs/scenarios.md): a file with only `name:` must not run on defaults.
+  if (!c.has("path")) c.fail("path", "is required (e.g. path: {type: straight})");
   ConfigSection path = c.section("path");
   s.path = make_path(path, directory);
   path.finish();
@@ -264,12 +273,7 @@ nlohmann::json to_json(const YAML::Node& node) {
       YAML::convert<bool>::decode(node, flag);
       return flag;
     }
-    try {
-      std::size_t used = 0;
-      const double number = std::stod(text, &used);
-      if (used == text.size()) return number;
-    } catch (const std::exception&) {
-    }
+    if (const std::optional<double> number = parse_number(text)) return *number;
   }
   return text;
 }

@@ -38,6 +38,14 @@ SweepAxis parse_sweep_axis(const std::string& text) {
 }
 
 std::vector<std::vector<std::string>> sweep_grid(const std::vector<SweepAxis>& axes) {
+  // Count first: 30 axes of 2 values are 2^30 rows (issue 12, defect 3).
+  double rows = 1.0;
+  for (const SweepAxis& axis : axes) rows *= static_cast<double>(axis.values.size());
+  if (rows > static_cast<double>(max_sweep_rows)) {
+    throw ConfigError("--vary: the " + std::to_string(axes.size()) + " axes give " +
+                      std::to_string(static_cast<long double>(rows)) + " runs; at most " +
+                      std::to_string(max_sweep_rows) + " are allowed");
+  }
   std::vector<std::vector<std::string>> sets{{}};
   for (const SweepAxis& axis : axes) {
     std::vector<std::vector<std::string>> next;

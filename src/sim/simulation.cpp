@@ -1,48 +1,16 @@
 #include "smoothsteer/sim/simulation.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <random>
 #include <stdexcept>
 
+#include "plant_integration.hpp"
 #include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
 namespace {
-
-std::string describe(const char* field, double value, const std::string& rule) {
-  return std::string("SimulationParameters: ") + field + " = " + std::to_string(value) + " " + rule;
-}
-
-using PlantArray = std::array<double, VehicleState::size>;
-
-PlantArray to_array(const VehicleState& d) {
-  return d.to_array();
-}
-
-//! Classic RK4 over one sub-step; the steering angle is interpolated linearly between the
-//! actuator output at the start and at the end of the sub-step.
-VehicleState rk4_step(const VehicleModel& model, const VehicleState& state, double h,
-                      double delta_start, double delta_end, double acceleration) noexcept {
-  const PlantArray x = state.to_array();
-  auto eval = [&](const PlantArray& y, double fraction) {
-    const double delta = delta_start + fraction * (delta_end - delta_start);
-    return to_array(model.derivative(VehicleState::from_array(y), delta, acceleration));
-  };
-  auto shifted = [&](const PlantArray& k, double scale) {
-    PlantArray y = x;
-    for (std::size_t i = 0; i < y.size(); ++i) y[i] += scale * k[i];
-    return y;
-  };
-  const PlantArray k1 = eval(x, 0.0);
-  const PlantArray k2 = eval(shifted(k1, 0.5 * h), 0.5);
-  const PlantArray k3 = eval(shifted(k2, 0.5 * h), 0.5);
-  const PlantArray k4 = eval(shifted(k3, h), 1.0);
-  PlantArray next = x;
-  for (std::size_t i = 0; i < next.size(); ++i) {
-    next[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-  }
-  return VehicleState::from_array(next);
-}
 
 bool finite(const VehicleState& s) {
   for (double v : s.to_array()) {
@@ -51,62 +19,106 @@ bool finite(const VehicleState& s) {
   return true;
 }
 
+bool all_finite(const TraceSample& sample) {
+  for (double v : trace_row(sample)) {
+    if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
-std::string SimulationParameters::validation_error() const {
+std::optional<Violation> SimulationParameters::first_violation() const noexcept {
+  auto bad = [](const char* field, double value, const char* rule,
+                double reference = std::numeric_limits<double>::quiet_NaN()) {
+    return Violation{"SimulationParameters", "", field, value, rule, reference};
+  };
   if (!std::isfinite(substep_s) || substep_s <= 0.0 || substep_s > 0.01) {
-    return describe("substep_s", substep_s, "must be in (0, 0.01]");
+    return bad("substep_s", substep_s, "must be in (0, 0.01]");
   }
   if (!std::isfinite(control_period_s) || control_period_s < substep_s || control_period_s > 1.0) {
-    return describe("control_period_s", control_period_s, "must be in [substep_s, 1]");
+    return bad("control_period_s", control_period_s, "must be in [substep_s, 1]");
   }
   const double ratio = control_period_s / substep_s;
   if (std::abs(ratio - std::round(ratio)) > 1e-6) {
-    return describe("control_period_s", control_period_s,
-                    "must be a whole multiple of substep_s = " + std::to_string(substep_s));
+    return bad("control_period_s", control_period_s,
+               "must be a whole multiple of substep_s =", substep_s);
   }
   if (!std::isfinite(duration_s) || duration_s <= 0.0 || duration_s > 3600.0) {
-    return describe("duration_s", duration_s, "must be in (0, 3600]");
+    return bad("duration_s", duration_s, "must be in (0, 3600]");
+  }
+  if (duration_s / control_period_s > max_control_steps) {
+    return bad("duration_s", duration_s,
+               "gives more control steps (duration_s / control_period_s) than allowed:",
+               max_control_steps);
+  }
+  if (duration_s / substep_s > max_substeps) {
+    return bad("duration_s", duration_s,
+               "gives more plant sub-steps (duration_s / substep_s) than allowed:", max_substeps);
+  }
+#if !SMOOTHSTEER_HAS_ODEINT
+  if (integrator != PlantIntegrator::fixed_rk4) {
+    return bad("integrator", static_cast<double>(integrator),
+               "needs Boost.Odeint, absent from this build: only fixed_rk4 (0) is available");
+  }
+#endif
+  if (!(integrator_tolerance >= 1e-14 && integrator_tolerance <= 1e-3)) {
+    return bad("integrator_tolerance", integrator_tolerance, "must be in [1e-14, 1e-3]");
   }
   if (!std::isfinite(stop_beyond_path_end_m)) {
-    return describe("stop_beyond_path_end_m", stop_beyond_path_end_m, "must be finite");
+    return bad("stop_beyond_path_end_m", stop_beyond_path_end_m, "must be finite");
   }
   if (!std::isfinite(matched_disturbance) || std::abs(matched_disturbance) > 1.0) {
-    return describe("matched_disturbance", matched_disturbance, "must be in [-1, 1] 1/m");
+    return bad("matched_disturbance", matched_disturbance, "must be in [-1, 1] 1/m");
   }
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
-    return describe("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
+    return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
   }
   if (!std::isfinite(heading_noise_std_rad) || heading_noise_std_rad < 0.0) {
-    return describe("heading_noise_std_rad", heading_noise_std_rad, "must be finite and >= 0");
+    return bad("heading_noise_std_rad", heading_noise_std_rad, "must be finite and >= 0");
   }
-  return {};
+  return std::nullopt;
+}
+
+std::string SimulationParameters::validation_error() const {
+  return describe(first_violation());
 }
 
 void SimulationParameters::validate() const {
-  const std::string error = validation_error();
-  if (!error.empty()) throw std::invalid_argument(error);
+  throw_if_violated(first_violation());
+}
+
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller) {
+  std::vector<TraceSample> trace;
+  trace.reserve(static_cast<std::size_t>(
+      std::min(std::ceil(parameters.duration_s / parameters.control_period_s) + 1.0,
+               SimulationParameters::max_control_steps + 1.0)));
+  SimulationResult result =
+      simulate(path, vehicle, actuator, speed, parameters, start, controller,
+               [&trace](const TraceSample& sample) { trace.push_back(sample); });
+  result.trace = std::move(trace);
+  return result;
 }
 
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator_parameters, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller) {
+                          SteeringController& controller, const TraceObserver& observer) {
   parameters.validate();
-  if (const std::string error = speed.validation_error(); !error.empty()) {
-    throw std::invalid_argument(error);
-  }
+  speed.validate();
   const VehicleParameters& car = vehicle.parameters();
   SteeringActuator actuator(actuator_parameters, parameters.substep_s);
   actuator.reset(0.0);
   const int substeps =
       static_cast<int>(std::lround(parameters.control_period_s / parameters.substep_s));
-  const double h = parameters.substep_s;
   const long steps =
       static_cast<long>(std::ceil(parameters.duration_s / parameters.control_period_s - 1e-9));
 
   SimulationResult result;
-  result.trace.reserve(static_cast<std::size_t>(steps) + 1);
+  std::vector<double> input_buffer(static_cast<std::size_t>(substeps));
   VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
   vehicle.constrain(state, 0.0);
   controller.reset(0.0);
@@ -115,11 +127,16 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
       controller.set_matched_disturbance(parameters.matched_disturbance)
           ? 0.0
           : parameters.matched_disturbance;
-  const double wheelbase = car.wheelbase_m();
-  auto effective = [&](double delta) {
-    return plant_disturbance == 0.0 ? delta
-                                    : std::atan(std::tan(delta) + wheelbase * plant_disturbance);
-  };
+  const detail::PlantContext plant{vehicle,
+                                   speed,
+                                   actuator,
+                                   plant_disturbance,
+                                   parameters.substep_s,
+                                   substeps,
+                                   parameters.integrator,
+                                   parameters.integrator_tolerance,
+                                   &result.model_evaluations,
+                                   input_buffer.data()};
 
   std::mt19937_64 engine(parameters.noise_seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);
@@ -184,7 +201,12 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     sample.side_slip_rad = side_slip_angle(state);
     sample.lateral_velocity_mps = state.vy_mps;
     sample.yaw_rate_radps = state.yaw_rate_radps;
-    result.trace.push_back(sample);
+    if (!all_finite(sample)) {
+      result.non_finite = true;
+      result.stop_reason = "non_finite";
+      break;
+    }
+    observer(sample);
 
     if (parameters.stop_at_path_end && !path.is_closed() &&
         rear_projection.arc_length_m > path.length() + parameters.stop_beyond_path_end_m) {
@@ -192,28 +214,8 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
       break;
     }
     if (k == steps) break;
-    // Zero-order hold of the command over the control period; the plant runs at the sub-step.
-    for (int j = 0; j < substeps; ++j) {
-      const double time = t + j * h;
-      delayed_input = actuator.push_command(command);
-      const double delta_start = effective(actuator.angle());
-      if (actuator.parameters().ideal) {
-        actuator.set_state({delayed_input, delayed_input, delayed_input});
-      } else {
-        actuator.advance(delayed_input);
-      }
-      const double delta_end = effective(actuator.angle());
-      const double acceleration = speed.acceleration(time + 0.5 * h);
-      const VehicleState before = state;
-      state = rk4_step(vehicle, state, h, actuator.parameters().ideal ? delta_end : delta_start,
-                       delta_end, acceleration);
-      vehicle.constrain(state, delta_end);
-      const double rear_vy_before = before.vy_mps - car.cg_to_rear_axle_m * before.yaw_rate_radps;
-      const double rear_vy_after = state.vy_mps - car.cg_to_rear_axle_m * state.yaw_rate_radps;
-      distance +=
-          0.5 * h *
-          (std::hypot(before.vx_mps, rear_vy_before) + std::hypot(state.vx_mps, rear_vy_after));
-    }
+    // Zero-order hold of the command over the control period (src/sim/plant_integration.hpp).
+    delayed_input = detail::advance_plant(plant, t, command, state, distance);
     if (!finite(state)) {
       result.non_finite = true;
       result.stop_reason = "non_finite";

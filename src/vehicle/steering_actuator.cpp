@@ -3,57 +3,55 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 namespace smoothsteer {
-namespace {
-
-std::string describe(const std::string& field, double value, const std::string& rule) {
-  std::ostringstream message;
-  message.precision(10);
-  message << "ActuatorParameters: " << field << " = " << value << " " << rule;
-  return message.str();
-}
-
-}  // namespace
 
 double ActuatorParameters::pole_radps() const noexcept {
   // (1 + (w / w_p)^2)^3 = 2 at w = 2 pi f_b.
   return 2.0 * std::numbers::pi * bandwidth_hz / std::sqrt(std::cbrt(2.0) - 1.0);
 }
 
-std::string ActuatorParameters::validation_error(double step_s) const {
+std::optional<Violation> ActuatorParameters::first_violation(double step_s) const noexcept {
+  auto bad = [](const char* field, double value, const char* rule,
+                double reference = std::numeric_limits<double>::quiet_NaN()) {
+    return Violation{"ActuatorParameters", "", field, value, rule, reference};
+  };
   if (!std::isfinite(step_s) || step_s <= 0.0) {
-    return describe("integration step", step_s, "must be finite and > 0");
+    return bad("integration step", step_s, "must be finite and > 0");
   }
   if (!ideal) {
     if (!std::isfinite(bandwidth_hz) || bandwidth_hz <= 0.0) {
-      return describe("bandwidth_hz", bandwidth_hz, "must be finite and > 0");
+      return bad("bandwidth_hz", bandwidth_hz, "must be finite and > 0");
     }
     if (pole_radps() * step_s > 0.5) {
-      return describe("bandwidth_hz", bandwidth_hz,
-                      "is too high for the plant sub-step " + std::to_string(step_s) +
-                          " s (needs pole * step <= 0.5 for accurate RK4)");
+      return bad("bandwidth_hz", bandwidth_hz,
+                 "is too high for the plant sub-step (needs pole * step <= 0.5 for accurate RK4); "
+                 "sub-step [s] =",
+                 step_s);
     }
-    if (!(max_angle_rad > 0.0)) return describe("max_angle_rad", max_angle_rad, "must be > 0");
-    if (!(max_rate_radps > 0.0)) return describe("max_rate_radps", max_rate_radps, "must be > 0");
+    if (!(max_angle_rad > 0.0)) return bad("max_angle_rad", max_angle_rad, "must be > 0");
+    if (!(max_rate_radps > 0.0)) return bad("max_rate_radps", max_rate_radps, "must be > 0");
   }
   if (!std::isfinite(dead_time_s) || dead_time_s < 0.0 || dead_time_s > 10.0) {
-    return describe("dead_time_s", dead_time_s, "must be in [0, 10]");
+    return bad("dead_time_s", dead_time_s, "must be in [0, 10]");
   }
   const double steps = dead_time_s / step_s;
   if (std::abs(steps - std::round(steps)) > 1e-6) {
-    return describe("dead_time_s", dead_time_s,
-                    "must be a whole multiple of the plant sub-step " + std::to_string(step_s) +
-                        " s (the delay is exact)");
+    return bad(
+        "dead_time_s", dead_time_s,
+        "must be a whole multiple of the plant sub-step (the delay is exact); sub-step [s] =",
+        step_s);
   }
-  return {};
+  return std::nullopt;
+}
+
+std::string ActuatorParameters::validation_error(double step_s) const {
+  return describe(first_violation(step_s));
 }
 
 void ActuatorParameters::validate(double step_s) const {
-  const std::string error = validation_error(step_s);
-  if (!error.empty()) throw std::invalid_argument(error);
+  throw_if_violated(first_violation(step_s));
 }
 
 SteeringActuator::SteeringActuator(const ActuatorParameters& parameters, double step_s)

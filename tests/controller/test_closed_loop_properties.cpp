@@ -159,7 +159,7 @@ TEST(ClosedLoopProperties, DelayCompensationRestoresConvergenceUnderDeadTime) {
 }
 
 TEST(ClosedLoopProperties, PrintedSurfaceCirclesFromFarWhileGlobalConverges) {
-  // paper-notes §4: the printed surface has no zero for |e| > 2 / ((1 - k_rob) kbar).
+  // paper_notes §4: the printed surface has no zero for |e| > 2 / ((1 - k_rob) kbar).
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 1000.0));
   ControllerParameters parameters;  // n = 2, kbar_l = 0.2 1/m -> 2/((1-k_rob) kbar) = 14.3 m
   const Pose2 start{{0.0, 40.0}, 0.0};

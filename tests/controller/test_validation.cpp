@@ -63,7 +63,7 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
   p.k_rob = 1.0;
   expect_rejected(p, "k_rob = 1", "[0, 1)");
   p = {};
-  p.k_rob = 3.0;  // the paper's printed value (paper-notes §5)
+  p.k_rob = 3.0;  // the paper's printed value (paper_notes §5)
   expect_rejected(p, "k_rob = 3", "[0, 1)");
   p = {};
   p.k_rob = -0.1;

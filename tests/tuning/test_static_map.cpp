@@ -1,5 +1,5 @@
 // The static map (paper Sec. III items 4-5) and the closed-form bounds of the invariant sets
-// (paper-notes §2): exact cases, comparison with the paper's corrected eq. (kappalmax), and seeded
+// (paper_notes §2): exact cases, comparison with the paper's corrected eq. (kappalmax), and seeded
 // random states inside the invariant sets that must never exceed the map.
 
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@ namespace {
 using namespace smoothsteer::testing;
 
 TEST(InvariantBounds, CorrectedKappalmaxForSecondOrder) {
-  // Paper-notes §2: kbar_l = sin(dbar) / sqrt(lambda^2 + lambda_l^2 sin^2 dbar) with dbar the
+  // Paper-paper_notes §2: kbar_l = sin(dbar) / sqrt(lambda^2 + lambda_l^2 sin^2 dbar) with dbar the
   // fictive front-angle bound; the real bound is tan(dbar_veh) = lambda_veh tan(dbar) / lambda.
   Random random(case_seed(0));
   for (int k = 0; k < property_cases(40); ++k) {

@@ -14,7 +14,7 @@
 //! The paper prints g = |cos psi| >= cos(psi-bar); the factor 1/(lambda cos^2 delta) is missing
 //! there (it is >= 1/lambda, so G = cos(psi-bar)/lambda is the correct lower bound).
 //! Control: delta' = -delta-bar' sign(S3(sigma; alpha)) with the time-optimal triple-integrator
-//! surface (triple_integrator.hpp, paper-notes §7); while |psi| >= psi-bar and the heading still
+//! surface (triple_integrator.hpp, paper_notes §7); while |psi| >= psi-bar and the heading still
 //! grows, delta' = -delta-bar' sign(sigma3) (the paper's second case) keeps |psi| bounded;
 //! delta is held at +-delta-bar instead of leaving C1.
 //! C1 and C2 hold by construction: delta is integrated from |delta'| <= delta-bar'.

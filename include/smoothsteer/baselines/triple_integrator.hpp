@@ -3,7 +3,7 @@
 //! Time-optimal feedback of the triple integrator x1''' = u, |u| <= U (Walther, Georgiou,
 //! Tannenbaum, "On the computation of switching surfaces in optimal control: a Groebner basis
 //! approach", IEEE TAC 2001). The paper's HOSM baseline (Sec. IV-B) prints the switching surface
-//! s(sigma) without its bracket term; the complete surface is (paper-notes §7):
+//! s(sigma) without its bracket term; the complete surface is (paper_notes §7):
 //!
 //!   S2 = x2 + x3 |x3| / (2U);  nu = sign(S2)  (nu = -sign(x3) if S2 = 0)
 //!   S3 = x1 + x3^3 / (3U^2) + nu ( x2 x3 / U + U^(-1/2) (nu x2 + x3^2 / (2U))^(3/2) )

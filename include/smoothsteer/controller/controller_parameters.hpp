@@ -14,7 +14,7 @@ enum class SlidingSurface {
   //! surface for cos(psi) > 0 and |e| < 1 / ((1 - k_rob) kbar); converges from any pose.
   global,
   //! Eq. (sigma) exactly as printed. Only converges for |e| < 2 / ((1 - k_rob) kbar) and
-  //! cos(psi) > 0 (paper-notes §4). Kept for reproduction and comparison.
+  //! cos(psi) > 0 (paper_notes §4). Kept for reproduction and comparison.
   paper,
 };
 
@@ -42,7 +42,7 @@ struct ControllerParameters {
   //! lambda_n the lead wheelbase lambda_l (for n = 2). Only the first n entries are used.
   std::array<double, max_order> wheelbases_m{2.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
   //! kbar_n: curvature bound of the lead wheel [1/m] (eq. kappan). The bounds of the wheels
-  //! behind it follow from the invariant sets (paper-notes §2).
+  //! behind it follow from the invariant sets (paper_notes §2).
   double lead_curvature_bound = 0.2;
   //! k_rob in [0, 1): robustness margin against matched disturbances |kappa_d| <= k_rob kbar_n
   //! (eq. sigma). Path curvature is such a disturbance.

@@ -62,7 +62,7 @@ class LeadWheelController final : public SteeringController {
   const ChainAngles& chain_angles() const noexcept { return angles_; }
   //! +1 while driving forwards, -1 in reverse.
   double direction() const noexcept { return direction_; }
-  //! Steering angle of the real vehicle for chain front angle delta_1 (notes §3):
+  //! Steering angle of the real vehicle for chain front angle delta_1 (paper_notes §3):
   //! tan(delta_veh) / lambda_veh = direction * tan(delta_1) / lambda_1.
   double vehicle_steering_angle(double front_angle) const noexcept;
 

@@ -1,6 +1,6 @@
 #pragma once
 //! \file trailer_chain.hpp
-//! Kinematics of the fictive trailer chain (paper Sec. II-C/D, paper-notes §1).
+//! Kinematics of the fictive trailer chain (paper Sec. II-C/D, paper_notes §1).
 //!
 //! Wheel 0 is the rear axle, wheel i sits lambda_i ahead of wheel i-1 along the heading of
 //! wheel i-1, and delta_i is the angle between the headings of wheels i-1 and i. Wheel n is the
@@ -20,7 +20,7 @@ namespace smoothsteer {
 
 using ChainAngles = std::array<double, ControllerParameters::max_order>;
 
-//! Bounds implied by the invariant sets |delta_i| <= asin(kbar_i lambda_i) (paper-notes §2).
+//! Bounds implied by the invariant sets |delta_i| <= asin(kbar_i lambda_i) (paper_notes §2).
 struct ChainBounds {
   //! kbar_0..kbar_n: curvature bound of each wheel [1/m]; index 0 is the rear axle.
   std::array<double, ControllerParameters::max_order + 1> curvature{};
@@ -35,7 +35,7 @@ struct ChainBounds {
 };
 
 //! d delta_veh / d delta_1 for delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1
-//! (notes §3): r / (cos^2 delta_1 + r^2 sin^2 delta_1).
+//! (paper_notes §3): r / (cos^2 delta_1 + r^2 sin^2 delta_1).
 double vehicle_angle_gain(double front_angle, double ratio) noexcept;
 
 //! Propagates kbar_n down the chain: kbar_{i-1} = kbar_i / sqrt(1 - kbar_i^2 lambda_i^2).

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "smoothsteer/io/text_checks.hpp"
+
 namespace smoothsteer::io {
 
 class ConfigError : public std::runtime_error {
@@ -21,7 +23,8 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-//! Allowed interval of a number; bounds are inclusive unless marked open.
+//! Allowed interval of a number; bounds are inclusive unless marked open. Every number must
+//! also be finite with magnitude <= max_input_magnitude (text_checks.hpp).
 struct Range {
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
@@ -79,8 +82,11 @@ class ConfigSection {
   std::shared_ptr<const std::set<std::string>> overridden_;
 };
 
-//! Loads a YAML file; ConfigError "<file>: cannot open" / "<file>: malformed YAML at line L,
-//! column C: <reason>".
+//! Loads a YAML file; ConfigError "<file>: cannot open" / "<file>: is a directory" /
+//! "<file>: not valid UTF-8 at line L" / "<file>: malformed YAML at line L, column C: <reason>" /
+//! "<file>: key 'a.b' (line L): duplicate key (first given at line M)".
 YAML::Node load_yaml_file(const std::string& file);
+//! The same checks on YAML text already in memory (`file` names it in messages).
+YAML::Node parse_yaml_text(const std::string& text, const std::string& file);
 
 }  // namespace smoothsteer::io

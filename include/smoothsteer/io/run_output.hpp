@@ -1,29 +1,34 @@
 #pragma once
 //! \file run_output.hpp
 //! Output files of a run: trace.csv (one row per control step, columns in docs/cli.md) and
-//! summary.json (metrics + full resolved parameters). Every file is written to a temporary
-//! file in the same directory and renamed, so no half-written file is ever visible.
+//! summary.json (metrics + full resolved parameters). They are written into an
+//! OutputDirectory and appear together, or not at all, when it is committed.
 
 #include <nlohmann/json.hpp>
 
 #include <string>
 
+#include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/io/scenario.hpp"
 
 namespace smoothsteer::io {
 
-//! Writes `content` to `path` atomically (temporary file + rename). Throws std::runtime_error.
-void write_file_atomically(const std::string& path, const std::string& content);
+//! Version of the project (CMake's project version) and the git commit it was configured from
+//! ("unknown" outside a git checkout).
+std::string tool_version();
+std::string tool_commit();
 
-//! The trace as CSV text (header + one row per control step).
-std::string trace_csv(const SimulationResult& result);
-//! Column names of trace_csv(), in order.
-const std::vector<std::string>& trace_columns();
-
-//! {"scenario", "controller", "status", "stop_reason", "metrics": {...}, "parameters": {...}}.
+//! {"tool": {"version", "commit"}, "scenario", "controller", "status", "stop_reason", "metrics":
+//! {...}, "parameters": {...}}.
 nlohmann::json summary_json(const Scenario& scenario, const RunResult& result);
 
-//! Creates `directory` if needed and writes trace.csv and summary.json into it.
+//! Simulates the scenario, streaming trace.csv into `out` as the steps are computed (memory
+//! does not grow with the run's length) and then writing summary.json. result.simulation.trace
+//! stays empty. Does not commit `out`.
+RunResult run_scenario(const Scenario& scenario, OutputDirectory& out);
+
+//! Writes trace.csv and summary.json of a finished run into `directory` (atomically, through an
+//! OutputDirectory).
 void write_run_outputs(const std::string& directory, const Scenario& scenario,
                        const RunResult& result);
 

@@ -18,7 +18,10 @@ struct SweepAxis {
 };
 //! Parses "key=v1,v2,v3". Throws ConfigError.
 SweepAxis parse_sweep_axis(const std::string& text);
+//! Most runs one sweep may ask for.
+inline constexpr std::size_t max_sweep_rows = 100'000;
 //! Cartesian product of the axes: every combination as a list of "key=value" overrides.
+//! Throws ConfigError if it would exceed max_sweep_rows.
 std::vector<std::vector<std::string>> sweep_grid(const std::vector<SweepAxis>& axes);
 //! The paper's Sec. IV-A variations of a lead_wheel scenario: the base, lead_curvature_bound
 //! -50 %, lead_wheelbase_m +300 % and k_rob -33 %, each alone.

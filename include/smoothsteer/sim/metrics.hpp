@@ -4,6 +4,7 @@
 //! down in docs/metrics.md; metric_values() lists them under their documented names.
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,7 +24,11 @@ struct MetricsParameters {
   //! Relative tolerance of the bound checks (a command exactly at the bound is no violation).
   double violation_tolerance = 1e-6;
 
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
   std::string validation_error() const;
+  void validate() const;  //!< throws std::invalid_argument
 };
 
 struct Metrics {
@@ -56,6 +61,45 @@ struct Metrics {
   int acceleration_violations = 0;  //!< steps with |d2 delta_cmd/dt2| above its limit
   int bound_violations = 0;         //!< steps with at least one of the three
   int non_finite_values = 0;        //!< non-finite numbers in the trace (must be 0)
+
+  // The held command (what the actuator receives: delta_cmd under the zero-order hold), by
+  // differences over the control period T: rate (d_k - d_{k-1}) / T, acceleration
+  // (d_k - 2 d_{k-1} + d_{k-2}) / T^2. Counts are steps above the vehicle's limits.
+  double held_rate_rms_radps = 0.0;
+  double held_rate_max_radps = 0.0;
+  double held_acceleration_rms_radps2 = 0.0;
+  double held_acceleration_max_radps2 = 0.0;
+  int held_rate_violations = 0;
+  int held_acceleration_violations = 0;
+  // The actuator's output delta_actual (its filter states at the control instants).
+  double actual_rate_rms_radps = 0.0;
+  double actual_acceleration_rms_radps2 = 0.0;
+  int actual_rate_violations = 0;
+  int actual_acceleration_violations = 0;
+};
+
+//! Reduces a trace one sample at a time: the same numbers as compute_metrics() without
+//! holding the trace (streaming runs, issue 12).
+class MetricsAccumulator {
+ public:
+  explicit MetricsAccumulator(const MetricsParameters& parameters);
+  void add(const TraceSample& sample);
+  Metrics result() const;
+
+ private:
+  struct Spread {
+    long count = 0;
+    double mean = 0.0, m2 = 0.0, sum_squares = 0.0, max_abs = 0.0;
+    void add(double x);
+    double std_dev() const;
+    double rms() const;
+  };
+  MetricsParameters parameters_;
+  Metrics m_;
+  long first_reached_ = 0;  //!< one past the last sample with |e_lead| >= threshold
+  double last_time_s_ = 0.0, last_command_rad_ = 0.0, last_held_rate_radps_ = 0.0;
+  Spread command_rate_, command_acceleration_, actual_rate_, actual_acceleration_;
+  Spread held_rate_, held_acceleration_;
 };
 
 Metrics compute_metrics(const std::vector<TraceSample>& trace, const MetricsParameters& parameters);

@@ -7,7 +7,9 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +21,24 @@
 
 namespace smoothsteer {
 
+//! How the plant is integrated between control instants (docs/simulation.md).
+enum class PlantIntegrator {
+  //! RK4 of vehicle and actuator at the fixed sub-step (the reference method).
+  fixed_rk4,
+  //! Exact actuator lags + Runge-Kutta-Fehlberg 7(8) with error control, restarted at every
+  //! control instant; fixed_rk4 for a period in which the actuator saturates.
+  rkf78,
+  //! The same with Dormand-Prince 5(4) (more model evaluations at equal accuracy here).
+  dopri5,
+};
+
 struct SimulationParameters {
   double control_period_s = 0.02;  //!< controller period (50 Hz) [s]; a multiple of substep_s
-  double substep_s = 0.001;        //!< RK4 step of the plant [s]
-  double duration_s = 60.0;        //!< longest simulated time [s]
+  double substep_s = 0.001;        //!< RK4 step of the plant; delay-line resolution [s]
+  PlantIntegrator integrator = PlantIntegrator::fixed_rk4;
+  //! Absolute local error tolerance of rkf78 / dopri5 (per state component, m, rad, m/s).
+  double integrator_tolerance = 1e-8;
+  double duration_s = 60.0;  //!< longest simulated time [s]
   //! Stop once the rear axle's closest point is this far beyond the end of an open path [m]
   //! (negative: before the end). Ignored for closed paths.
   double stop_beyond_path_end_m = 0.0;
@@ -36,6 +52,14 @@ struct SimulationParameters {
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
 
+  //! Caps on what the input controls (issue 12, defect 3): control steps of one run
+  //! (duration_s / control_period_s) and plant sub-steps (duration_s / substep_s).
+  static constexpr double max_control_steps = 1e7;
+  static constexpr double max_substeps = 1e8;
+
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
   //! Empty when valid, else a message naming the field, value and rule.
   std::string validation_error() const;
   void validate() const;  //!< throws std::invalid_argument
@@ -80,15 +104,28 @@ struct SimulationResult {
   Status status = Status::ok;  //!< first non-ok controller status (the run stops there)
   std::vector<TraceSample> trace;
   VehicleState final_state;
-  bool non_finite = false;  //!< a NaN/inf appeared in the plant state (the run stops there)
+  //! A NaN/inf appeared in the plant state or in a sample (the run stops before emitting it).
+  bool non_finite = false;
   std::string stop_reason;  //!< "duration", "path_end", "controller_error" or "non_finite"
+  std::uint64_t model_evaluations = 0;  //!< calls of VehicleModel::derivative (cost measure)
 };
 
+//! Receives every trace sample as it is produced (e.g. a CSV writer and a metrics accumulator).
+using TraceObserver = std::function<void(const TraceSample&)>;
+
 //! Runs the closed loop from the rear-axle pose `start` (vehicle driving straight at the
-//! profile's initial speed, actuator settled at 0). The controller is reset first.
+//! profile's initial speed, actuator settled at 0). The controller is reset first. A sample
+//! with a non-finite value is never emitted: the run stops before it with stop_reason
+//! "non_finite" (issue 12, defect 2).
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
                           SteeringController& controller);
+//! The same, streaming: every sample goes to `observer` and result.trace stays empty, so
+//! memory does not grow with the duration.
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer);
 
 }  // namespace smoothsteer

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
+
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -32,10 +35,10 @@ struct SpeedProfile {
     return final_speed_mps > initial_speed_mps ? acceleration_mps2 : -acceleration_mps2;
   }
 
-  //! Empty when valid, else a message naming the field, value and rule.
-  std::string validation_error() const {
+  //! The first rule broken (validation.hpp).
+  std::optional<Violation> first_violation() const noexcept {
     auto bad = [](const char* field, double value, const char* rule) {
-      return std::string("SpeedProfile: ") + field + " = " + std::to_string(value) + " " + rule;
+      return Violation{"SpeedProfile", "", field, value, rule};
     };
     if (!std::isfinite(initial_speed_mps) || initial_speed_mps <= 0.0 ||
         initial_speed_mps > 100.0) {
@@ -50,8 +53,12 @@ struct SpeedProfile {
     if (!std::isfinite(start_time_s) || start_time_s < 0.0) {
       return bad("start_time_s", start_time_s, "must be finite and >= 0");
     }
-    return {};
+    return std::nullopt;
   }
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else a message naming the field, value and rule.
+  std::string validation_error() const { return describe(first_violation()); }
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 }  // namespace smoothsteer

@@ -30,7 +30,7 @@ struct TuningOptions {
   //! kbar_l must not fall below this [1/m] (lead radius at most 1/this); else infeasible.
   double min_lead_curvature_bound = 1e-3;
   //! Matched disturbance kappa_d [1/m] and reference-path curvature bound [1/m] that k_rob must
-  //! cover (Sec. III item 2, paper-notes §6).
+  //! cover (Sec. III item 2, paper_notes §6).
   double matched_disturbance_curvature = 0.0;
   double path_curvature_bound = 0.0;
   double k_rob_floor = 0.3;     //!< k_rob = max(floor, (kappa_d + kbar_path) / kbar_l)

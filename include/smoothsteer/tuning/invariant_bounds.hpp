@@ -1,7 +1,7 @@
 #pragma once
 //! \file invariant_bounds.hpp
 //! Closed-form parameter bounds from the invariant sets of the trailer chain (paper Sec. III
-//! items 1-3, paper-notes §2, §3, §5). Valid for any order n >= 1.
+//! items 1-3, paper_notes §2, §3, §5). Valid for any order n >= 1.
 //!
 //! Going down the chain, kbar_{i-1} = kbar_i / sqrt(1 - kbar_i^2 lambda_i^2); going up, the
 //! inverse kbar_i = kbar_{i-1} / sqrt(1 + kbar_{i-1}^2 lambda_i^2). Hence
@@ -32,7 +32,7 @@ double steering_angle_bound(const ControllerParameters& parameters);
 //! lambda_2..lambda_n (count entries). Throws if sum lambda_i^2 >= lambda_veh^2.
 double fictive_wheelbase(double vehicle_wheelbase_m, const double* outer_wheelbases, int count);
 
-//! Paper Sec. III item 2 with paper-notes §5/§6: k_rob >= (kappa_d + kbar_path) / kbar_n, where a
+//! Paper Sec. III item 2 with paper_notes §5/§6: k_rob >= (kappa_d + kbar_path) / kbar_n, where a
 //! curved reference path acts as a matched disturbance of at most its curvature bound. Returns
 //! max(k_rob_floor, that ratio). Throws std::invalid_argument naming the inputs when the result
 //! is not below k_rob_ceiling (< 1: eq. sigma divides by 1 - k_rob).

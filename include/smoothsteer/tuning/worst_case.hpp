@@ -3,7 +3,7 @@
 //! Derivatives of the REAL steering angle with respect to the rear arc length s, per state of the
 //! chain, and their worst case over the invariant-set box (paper Sec. III items 4-5).
 //!
-//! delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1 (paper-notes §3), so with
+//! delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1 (paper_notes §3), so with
 //! g = d delta_veh / d delta_1 = r / (cos^2 + r^2 sin^2):
 //!   d delta_veh / ds   = g delta_1'
 //!   d2 delta_veh / ds2 = g' delta_1'^2 + g delta_1''

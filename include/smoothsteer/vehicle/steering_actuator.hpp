@@ -9,8 +9,11 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -25,10 +28,13 @@ struct ActuatorParameters {
 
   //! Pole of each first-order lag [rad/s].
   double pole_radps() const noexcept;
-  //! Checks the fields and that dead_time_s is a whole multiple of `step_s`; throws
-  //! std::invalid_argument naming the field, its value and the rule.
-  void validate(double step_s) const;
+  //! The first rule broken for the plant sub-step `step_s` (validation.hpp), including that
+  //! dead_time_s is a whole multiple of it.
+  std::optional<Violation> first_violation(double step_s) const noexcept;
+  bool is_valid(double step_s) const noexcept { return !first_violation(step_s); }
   std::string validation_error(double step_s) const;
+  //! Throws std::invalid_argument with validation_error(step_s).
+  void validate(double step_s) const;
 };
 
 class SteeringActuator {

@@ -1,7 +1,7 @@
 #pragma once
 //! \file vehicle_model.hpp
 //! Planar single-track vehicle models behind one interface. The state is that of the kinetic
-//! model (Rajamani ch. 2; paper-notes §9): position of the centre of gravity (CG), heading, and
+//! model (Rajamani ch. 2; paper_notes §9): position of the centre of gravity (CG), heading, and
 //! the body-frame velocity and yaw rate. The kinematic model uses the same state, with vy and r
 //! fixed algebraically by the steering angle, so the simulation and the metrics treat both alike.
 //! Longitudinal speed is prescribed: d vx / dt is an input (the speed profile), i.e. the
@@ -75,7 +75,7 @@ class KinematicVehicleModel final : public VehicleModel {
   const char* name() const noexcept override { return "kinematic"; }
 };
 
-//! Kinetic single-track model with Pacejka lateral forces (paper-notes §9), blended linearly to
+//! Kinetic single-track model with Pacejka lateral forces (paper_notes §9), blended linearly to
 //! the kinematic model between kinematic_below_mps and kinetic_above_mps so that nothing divides
 //! by a vanishing speed.
 class DynamicSingleTrack final : public VehicleModel {

@@ -1,11 +1,14 @@
 #pragma once
 //! \file vehicle_parameters.hpp
 //! Parameters of the single-track vehicle models (kinematic and kinetic) and of the Pacejka
-//! Magic Formula lateral tire (paper-notes §9; Rajamani, Vehicle Dynamics and Control, ch. 2, 13).
+//! Magic Formula lateral tire (paper_notes §9; Rajamani, Vehicle Dynamics and Control, ch. 2, 13).
 //! Defaults: CommonRoad vehicle models, "vehicle 2" (BMW 320i), see vehicles/passenger_car.yaml.
 
 #include <limits>
+#include <optional>
 #include <string>
+
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -52,10 +55,13 @@ struct VehicleParameters {
   //! axle cornering stiffnesses Cf, Cr = B C D (Rajamani eq. 3.23 written per axle).
   double understeer_gradient() const noexcept;
 
-  //! Throws std::invalid_argument naming the field, its value and the rule.
-  void validate() const;
-  //! Empty when valid, else the message.
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else the message naming the field, its value and the rule.
   std::string validation_error() const;
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const;
 };
 
 }  // namespace smoothsteer

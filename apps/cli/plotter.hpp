@@ -1,0 +1,19 @@
+#pragma once
+//! `--plot`: runs scripts/plot_trace.py on a written trace, without a shell (issue 12, defect 1).
+
+#include <string>
+
+namespace smoothsteer::cli {
+
+//! The plot script: $SMOOTHSTEER_PLOT_SCRIPT if set, else the first existing of
+//! <executable dir>/../share/smoothsteer/plot_trace.py (installed layout),
+//! <install prefix>/share/smoothsteer/plot_trace.py and <source tree>/scripts/plot_trace.py.
+//! Throws std::runtime_error naming every place it looked.
+std::string find_plot_script();
+
+//! Runs /usr/bin/python3 SCRIPT CSV PNG through posix_spawn with an argument vector (no shell,
+//! so no character of the paths is interpreted) and waits for it. Throws std::runtime_error
+//! with the script's exit status on failure.
+void run_plotter(const std::string& script, const std::string& csv, const std::string& png);
+
+}  // namespace smoothsteer::cli

@@ -1,0 +1,40 @@
+#pragma once
+// Plant integration of the closed-loop simulation over one control period (internal to
+// src/sim). Methods (PlantIntegrator):
+//   - fixed_rk4: classic RK4 of the vehicle at the sub-step, the actuator by RK4 at the same
+//     step (the method of earlier releases, kept as the reference);
+//   - rkf78 and dopri5: the three lags of the actuator solved exactly (a linear
+//     system with a piecewise constant input), the vehicle by the embedded Runge-Kutta pair
+//     Fehlberg 7(8) or Dormand-Prince 5(4) with error control (Boost.Odeint), restarted at
+//     every control instant. A period in which the exact solution would reach the actuator's
+//     rate or angle saturation is integrated by fixed_rk4 instead.
+// docs/simulation.md describes both; docs/benchmarks.md compares them.
+
+#include <array>
+#include <cstdint>
+
+#include "smoothsteer/sim/simulation.hpp"
+
+namespace smoothsteer::detail {
+
+//! What one control period of plant integration needs besides the state.
+struct PlantContext {
+  const VehicleModel& model;
+  const SpeedProfile& speed;
+  SteeringActuator& actuator;
+  double plant_disturbance = 0.0;  //!< matched disturbance applied in the plant [1/m]
+  double substep_s = 0.001;
+  int substeps = 20;
+  PlantIntegrator integrator = PlantIntegrator::fixed_rk4;
+  double tolerance = 1e-8;
+  std::uint64_t* model_evaluations = nullptr;
+  double* input_buffer = nullptr;  //!< room for `substeps` delayed inputs
+};
+
+//! Advances the vehicle state, the actuator (its delay line included) and the travelled
+//! distance of the rear axle over one control period from time t with the held command.
+//! Returns the last delayed actuator input (for the actuator's rate at the next sample).
+double advance_plant(const PlantContext& context, double t, double command, VehicleState& state,
+                     double& distance_m) noexcept;
+
+}  // namespace smoothsteer::detail

@@ -1,0 +1,252 @@
+// Issue 12: the hostile inputs that adversarial testing found, as one table. Every one must be
+// rejected with a message that names the file (or option), the key or line, and the rule.
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "smoothsteer/io/atomic_output.hpp"
+#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/io/sweep.hpp"
+#include "smoothsteer/io/text_checks.hpp"
+#include "smoothsteer/io/waypoint_csv.hpp"
+
+namespace smoothsteer::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* valid =
+    "name: t\npath: {type: straight}\nspeed: {initial_mps: 5}\ncontroller: {type: lead_wheel}\n";
+
+struct BadInput {
+  const char* what;
+  std::string scenario;                //!< text of s.yaml
+  std::vector<std::string> overrides;  //!< --set
+  std::vector<std::string> expected;   //!< parts of the message ("FILE" = the scenario path)
+};
+
+class HostileInputs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() / ("smoothsteer_hostile_" + std::to_string(::getpid()));
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(directory_ / name, std::ios::binary) << text;
+    return (directory_ / name).string();
+  }
+  std::string error_of(const BadInput& input) {
+    const std::string file = write("s.yaml", input.scenario);
+    try {
+      load_scenario(file, input.overrides);
+    } catch (const ConfigError& error) {
+      return error.what();
+    }
+    return "";
+  }
+  fs::path directory_;
+};
+
+TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
+  write("pts_huge.csv", "x,y\n0,0\n104,1e300\n");
+  write("pts_garbage.csv", "x,y\n0,0\n1,0.3garbage\n");
+  fs::create_directories(directory_ / "a_directory");
+  const std::string s = valid;
+  const std::vector<BadInput> table{
+      // Defect 2: magnitudes that break the arithmetic.
+      {"start 1e155 m away",
+       s,
+       {"start.x_m=1e155"},
+       {"FILE", "'start.x_m'", "1e+155", "1000000000"}},
+      {"start.x_m = 1e308", s, {"start.x_m=1e308"}, {"FILE", "'start.x_m'", "out of range"}},
+      {"circle of radius 1e308",
+       "path: {type: circle, radius_m: 1e308}\ncontroller: {type: lead_wheel}\n",
+       {},
+       {"FILE", "'path.radius_m'", "out of range"}},
+      {"waypoint row 104,1e300",
+       "path: {type: waypoints_csv, file: pts_huge.csv}\ncontroller: {type: lead_wheel}\n",
+       {},
+       {"pts_huge.csv", "line 3", "magnitude"}},
+      {"overflowing number", s, {"start.y_m=1e999"}, {"'start.y_m'", "expected a number"}},
+      // Defect 3: counts the input controls.
+      {"lane change from 1e17",
+       "path: {type: lane_change}\ncontroller: {type: lead_wheel}\n",
+       {"path.x_start_m=-1e8", "path.x_end_m=1e8", "path.spacing_m=0.05"},
+       {"FILE", "'path.x_end_m'", "samples", "at most"}},
+      {"lane change x_start 1e17",
+       "path: {type: lane_change}\ncontroller: {type: lead_wheel}\n",
+       {"path.x_start_m=1e17"},
+       {"FILE", "'path.x_start_m'", "out of range"}},
+      {"tiny period, long run",
+       s,
+       {"simulation.substep_s=1e-6", "simulation.control_period_s=1e-5",
+        "simulation.duration_s=3600"},
+       {"FILE", "'simulation'", "duration_s", "control steps", "1e+07"}},
+      // Defect 6: silent acceptance.
+      {"duplicate key",
+       s + "name: again\n",
+       {},
+       {"FILE", "'name'", "line 5", "duplicate key", "line 1"}},
+      {"nested duplicate key",
+       "path: {type: straight, length_m: 3, length_m: 4}\ncontroller: {type: lead_wheel}\n",
+       {},
+       {"FILE", "'path.length_m'", "duplicate key"}},
+      {"only a name", "name: x\n", {}, {"FILE", "'path'", "is required"}},
+      {"no controller type",
+       "path: {type: straight}\n",
+       {},
+       {"FILE", "'controller.type'", "is required"}},
+      {"tilde value",
+       s + "simulation: {duration_s: ~}\n",
+       {},
+       {"FILE", "'simulation.duration_s'", "has no value"}},
+      {"empty value",
+       s + "simulation:\n  duration_s:\n",
+       {},
+       {"'simulation.duration_s'", "has no value"}},
+      {"empty --set value",
+       s,
+       {"controller.k_rob="},
+       {"'controller.k_rob'", "(from --set)", "has no value"}},
+      {"0.3garbage",
+       s,
+       {"controller.k_rob=0.3garbage"},
+       {"'controller.k_rob'", "expected a number", "0.3garbage"}},
+      {"0.3garbage in a list",
+       s,
+       {"start={x_m: 1}", "path.start=[0, 0.3garbage]"},
+       {"'path.start'", "element 1"}},
+      {"garbage in a waypoint CSV",
+       "path: {type: waypoints_csv, file: pts_garbage.csv}\ncontroller: {type: lead_wheel}\n",
+       {},
+       {"pts_garbage.csv", "line 3", "two finite numbers"}},
+      {"unknown enum value",
+       s,
+       {"controller.surface=7"},
+       {"'controller.surface'", "'7'", "must be one of"}},
+      // Defect 4: text must be UTF-8.
+      {"non-UTF-8 description",
+       s + "description: caf\xe9\n",
+       {},
+       {"FILE", "not valid UTF-8", "line 5"}},
+      {"non-UTF-8 --set", s, {"name=caf\xe9"}, {"override", "not valid UTF-8"}},
+      // Defect 8: messages that named nothing.
+      {"non-string vehicle.file",
+       s + "vehicle: {file: [1, 2]}\n",
+       {},
+       {"FILE", "'vehicle.file'", "expected a string"}},
+      {"vehicle.file ~",
+       s + "vehicle: {file: ~}\n",
+       {},
+       {"FILE", "'vehicle.file'", "has no value"}},
+      {"vehicle file is a directory",
+       s + "vehicle: {file: a_directory}\n",
+       {},
+       {"a_directory", "is a directory"}},
+      {"waypoint file is a directory",
+       "path: {type: waypoints_csv, file: a_directory}\ncontroller: {type: lead_wheel}\n",
+       {},
+       {"a_directory", "not a regular file"}},
+      {"control period not a multiple, shown exactly",
+       s,
+       {"simulation.control_period_s=0.0200001"},
+       {"'simulation'", "0.0200001", "whole multiple"}},
+  };
+  const std::string file = (directory_ / "s.yaml").string();
+  for (const BadInput& input : table) {
+    SCOPED_TRACE(input.what);
+    const auto start = std::chrono::steady_clock::now();
+    const std::string message = error_of(input);
+    ASSERT_FALSE(message.empty()) << "accepted: " << input.what;
+    for (const std::string& part : input.expected) {
+      const std::string wanted = part == "FILE" ? file : part;
+      EXPECT_NE(message.find(wanted), std::string::npos)
+          << "'" << wanted << "' missing in: " << message;
+    }
+    // Rejected before any large allocation or loop (the lane change from 1e17 used to spin).
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+  }
+}
+
+TEST_F(HostileInputs, SubnormalNumbersAreNumbers) {
+  const std::string file = write("s.yaml", valid);
+  EXPECT_NO_THROW(load_scenario(file, {"start.heading_rad=1e-308", "start.y_m=4.9e-324"}));
+  EXPECT_EQ(parse_number("1e-308"), 1e-308);
+  EXPECT_FALSE(parse_number("1e309"));
+  EXPECT_FALSE(parse_number("0.3garbage"));
+  EXPECT_FALSE(parse_number(" 1"));
+  EXPECT_FALSE(parse_number("nan"));
+  EXPECT_FALSE(parse_number("inf"));
+  EXPECT_FALSE(parse_number(""));
+  EXPECT_EQ(parse_number("-2.5e3"), -2500.0);
+}
+
+TEST_F(HostileInputs, Utf8Validation) {
+  EXPECT_FALSE(invalid_utf8_offset("plain ascii, caf\xc3\xa9, \xe2\x82\xac, \xf0\x9f\x9a\x97"));
+  EXPECT_EQ(invalid_utf8_offset("ab\xe9"), 2u);            // Latin-1 byte
+  EXPECT_EQ(invalid_utf8_offset("\xc0\xaf"), 0u);          // overlong '/'
+  EXPECT_EQ(invalid_utf8_offset("x\xed\xa0\x80"), 1u);     // surrogate
+  EXPECT_EQ(invalid_utf8_offset("\xf4\x90\x80\x80"), 0u);  // above U+10FFFF
+  EXPECT_EQ(invalid_utf8_offset("\xe2\x82"), 0u);          // truncated
+}
+
+TEST_F(HostileInputs, SweepGridIsCountedBeforeItIsBuilt) {
+  std::vector<SweepAxis> axes(30, SweepAxis{"controller.k_rob", {"0.2", "0.3"}});
+  try {
+    sweep_grid(axes);
+    FAIL() << "a 2^30-row grid was accepted";
+  } catch (const ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("--vary"), std::string::npos) << error.what();
+  }
+  axes.resize(3);
+  EXPECT_EQ(sweep_grid(axes).size(), 8u);
+}
+
+TEST_F(HostileInputs, AtomicOutputsRefuseWhatTheyMustNotReplace) {
+  const fs::path fifo = directory_ / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THROW(write_file_atomically(fifo.string(), "x", "--out"), std::runtime_error);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_THROW(OutputDirectory(fifo.string(), "--out"), std::runtime_error);
+  EXPECT_THROW(OutputDirectory(directory_.string() + "/.", "--out"), std::runtime_error);
+
+  const fs::path target = directory_ / "run";
+  {
+    OutputDirectory out(target.string(), "--out");
+    std::ofstream(out.file("trace.csv")) << "old";
+    out.commit();
+  }
+  {
+    OutputDirectory out(target.string(), "--out");
+    std::ofstream(out.file("trace.csv")) << "new";
+    // not committed: destroyed on the way out of a failing run
+  }
+  EXPECT_EQ(std::ifstream(target / "trace.csv").rdbuf()->sgetc(), 'o');
+  {
+    OutputDirectory out(target.string(), "--out");
+    std::ofstream(out.file("summary.json")) << "{}";
+    out.commit();
+  }
+  EXPECT_FALSE(fs::exists(target / "trace.csv")) << "the old set must be replaced as a whole";
+  EXPECT_TRUE(fs::exists(target / "summary.json"));
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(directory_)) ++entries;
+  EXPECT_EQ(entries, 2u) << "temporary directories left behind";
+}
+
+TEST_F(HostileInputs, WaypointCsvReader) {
+  EXPECT_EQ(parse_waypoint_csv("x,y\n# c\n0,0\n\n1, 2\r\n", "w.csv").size(), 2u);
+  EXPECT_THROW(parse_waypoint_csv("0,0\n1,2,3\n", "w.csv"), ConfigError);
+  EXPECT_THROW(parse_waypoint_csv("0,0\n", "w.csv"), ConfigError);
+  EXPECT_THROW(parse_waypoint_csv("0,0\n1,inf\n", "w.csv"), ConfigError);
+}
+
+}  // namespace
+}  // namespace smoothsteer::io
