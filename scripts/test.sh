@@ -2,12 +2,15 @@
 # Builds everything with warnings as errors and runs every test:
 #   1. the formatting of every C++ file against .clang-format,
 #   2. the full suite (ci preset: Release, -Werror),
-#   3. a consumer project built against the installed package (find_package(smoothsteer)),
-#   4. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow
+#   3. a consumer project built against the installed package (find_package(smoothsteer)), with
+#      the core and the tuning module,
+#   4. the standard-library core alone (-DSMOOTHSTEER_CORE_ONLY=ON: no yaml-cpp, Ipopt, Eigen,
+#      Boost),
+#   5. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow
 #      included (asan preset, clang-14),
-#   5. every libFuzzer target for a bounded time from the seed corpus (scripts/fuzz.sh).
+#   6. every libFuzzer target for a bounded time from the seed corpus (scripts/fuzz.sh).
 # SMOOTHSTEER_PROPERTY_CASES sets the number of randomized cases per property (default 40; CI
-# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips steps 4 and 5.
+# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips steps 5 and 6.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -27,6 +30,11 @@ cmake -S cmake/consumer_test -B "$prefix/consumer-build" -DCMAKE_PREFIX_PATH="$p
 cmake --build "$prefix/consumer-build" > /dev/null
 "$prefix/consumer-build/consumer"
 echo "consumer: 1 passed, 0 failed"
+
+cmake -S . -B build/core-only -DCMAKE_BUILD_TYPE=Release -DSMOOTHSTEER_WERROR=ON \
+  -DSMOOTHSTEER_CORE_ONLY=ON > /dev/null
+cmake --build build/core-only -j"$jobs" > /dev/null
+echo "core only: 1 passed, 0 failed"
 
 if [[ "${SMOOTHSTEER_SKIP_ASAN:-0}" != "1" ]]; then
   cmake --preset asan

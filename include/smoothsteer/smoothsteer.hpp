@@ -3,6 +3,7 @@
 //! Umbrella header of the real-time core.
 
 #include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/controller/cusp_sequencer.hpp"
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
@@ -12,6 +13,7 @@
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/path/path_plan.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "smoothsteer/sim/simulation.hpp"

@@ -9,6 +9,7 @@ enum class Status {
   invalid_input = -1,    //!< NaN/inf pose, speed or period, or a non-positive period
   not_configured = -2,   //!< the controller has no path
   numerical_error = -3,  //!< an internal value became non-finite; the state was reset
+  unsupported = -4,      //!< the controller does not implement this call
 };
 
 //! Human-readable name of a status, for logs.
@@ -22,6 +23,8 @@ constexpr const char* to_string(Status status) noexcept {
       return "not_configured";
     case Status::numerical_error:
       return "numerical_error";
+    case Status::unsupported:
+      return "unsupported";
   }
   return "unknown";
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "baseline_common.hpp"
+#include "geometric_reverse.hpp"
 
 namespace smoothsteer {
 
@@ -42,6 +43,8 @@ Status StanleyController::update(const ControllerInput& input, ControllerOutput&
     const double heading_error = wrap_angle(input.heading_rad - front.heading_rad);
     steering_ = -heading_error - std::atan(parameters_.gain_per_s * front.lateral_error_m /
                                            (parameters_.softening_mps + input.speed_mps));
+  } else if (input.speed_mps < 0.0) {
+    steering_ = reverse_stanley_steering(rear.projection, input, parameters_);
   }
   detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
                       previous, front.lateral_error_m, output);
@@ -92,6 +95,8 @@ Status PurePursuitController::update(const ControllerInput& input,
   if (input.speed_mps > 0.0 && distance > 1e-6) {
     const double bearing = wrap_angle(std::atan2(to_target.y, to_target.x) - input.heading_rad);
     steering_ = std::atan(2.0 * parameters_.wheelbase_m * std::sin(bearing) / distance);
+  } else if (input.speed_mps < 0.0 && distance > 1e-6) {
+    steering_ = reverse_pure_pursuit_steering(to_target, distance, input, parameters_);
   }
   detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, steering_,
                       previous, lookahead, output);

@@ -52,7 +52,8 @@ ScenarioScore score(const io::Scenario& scenario, const std::string& controller,
   result.scenario = scenario.name;
   result.max_abs_e_m = m.max_abs_rear_error_m;
   result.max_abs_e_after_reaching_m = m.max_abs_rear_error_after_reaching_m;
-  result.rate_std_radps = m.command_rate_std_radps;
+  result.held_rate_rms_radps = m.held_rate_rms_radps;
+  result.actual_rate_rms_radps = m.actual_rate_rms_radps;
   result.max_side_slip_rad = m.max_abs_side_slip_rad;
   result.clamped_updates =
       saturated->saturation().angle_limited + saturated->saturation().rate_limited;
@@ -164,7 +165,7 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
         axes.empty() ? std::vector<int>{} : grid_shape(options.budget, axes.size());
     int configurations = 1;
     for (int count : shape) configurations *= count;
-    // Key of a configuration: (not admissible, worst max |e|, mean rate std, grid index).
+    // Key of a configuration: (not admissible, worst max |e|, mean held rate RMS, grid index).
     using Rank = std::tuple<bool, double, double, int>;
     Rank best{true, HUGE_VAL, HUGE_VAL, configurations};
     std::vector<std::pair<std::string, double>> best_gains;
@@ -182,7 +183,7 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
         const ScenarioScore s = score(scenario, controller, gains, options.divergence_m);
         admissible = admissible && !s.diverged && s.clamped_updates == 0;
         worst = std::max(worst, std::isfinite(s.max_abs_e_m) ? s.max_abs_e_m : HUGE_VAL);
-        rate_sum += s.rate_std_radps;
+        rate_sum += s.held_rate_rms_radps;
       }
       const Rank rank{!admissible, worst, rate_sum / static_cast<double>(training.size()), index};
       if (rank < best) {
@@ -207,11 +208,17 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
 ResultsTable TuningRuleResult::table() const {
   ResultsTable t;
   t.title = "Every controller tuned by one rule, reported on held-out scenarios";
-  t.header = {"scenario",       "controller",
-              "max_abs_e_m",    "max_abs_e_after_reaching_m",
-              "rate_std_radps", "clamped_updates",
-              "diverged",       "max_side_slip_rad",
-              "configurations", "admissible_in_training",
+  t.header = {"scenario",
+              "controller",
+              "max_abs_e_m",
+              "max_abs_e_after_reaching_m",
+              "held_rate_rms_radps",
+              "actual_rate_rms_radps",
+              "clamped_updates",
+              "diverged",
+              "max_side_slip_rad",
+              "configurations",
+              "admissible_in_training",
               "gains"};
   for (std::size_t s = 0; s < held_out.size(); ++s) {
     for (const TunedController& c : controllers) {
@@ -222,7 +229,8 @@ ResultsTable TuningRuleResult::table() const {
       }
       t.rows.push_back({score.scenario, c.controller, ResultsTable::number(score.max_abs_e_m),
                         ResultsTable::number(score.max_abs_e_after_reaching_m),
-                        ResultsTable::number(score.rate_std_radps),
+                        ResultsTable::number(score.held_rate_rms_radps),
+                        ResultsTable::number(score.actual_rate_rms_radps),
                         std::to_string(score.clamped_updates), score.diverged ? "yes" : "no",
                         ResultsTable::number(score.max_side_slip_rad),
                         std::to_string(c.configurations), c.admissible ? "yes" : "no",
@@ -240,7 +248,8 @@ ResultsTable TuningRuleResult::table() const {
              "Chosen: admissible (no clamped update, max |e| <= " +
                  ResultsTable::number(options.divergence_m, 1) +
                  " m) on every training scenario first, then the smallest worst-case max |e|, "
-                 "then the smallest mean rate std. max_abs_e_after_reaching_m: after the lead "
+                 "then the smallest mean RMS rate of the held command (docs/metrics.md). "
+                 "max_abs_e_after_reaching_m: after the lead "
                  "wheel stays within the scenario's reaching threshold (-1: never); on "
                  "circle_sections the whole-run max |e| is the 1 m start offset."};
   return t;

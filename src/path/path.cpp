@@ -167,13 +167,18 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   }
   Path path;
   path.closed_ = closed;
-  path.bounds_.reserve(segments.size());
+  path.capsules_.reserve(segments.size());
+  std::vector<SegmentBox> boxes;
+  boxes.reserve(segments.size());
   double s = 0.0;
   for (PathSegment& segment : segments) {
     segment.s0 = s;
     s += segment.length;
     // Every point of a curve lies within half its length (along the curve) of its middle.
-    SegmentBound bound{segment.evaluate_at(0.5 * segment.length).position, 0.5 * segment.length};
+    struct {
+      Vec2 center;
+      double radius;
+    } bound{segment.evaluate_at(0.5 * segment.length).position, 0.5 * segment.length};
     if (segment.kind == PathSegment::Kind::arc) {
       path.max_abs_curvature_ = std::max(path.max_abs_curvature_, std::abs(segment.curvature));
       const double radius = 1.0 / std::abs(segment.curvature);
@@ -190,14 +195,16 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
             std::max(path.max_abs_curvature_, std::abs(segment.evaluate_parameter(t).curvature));
       }
     }
-    path.bounds_.push_back(bound);
+    const Vec2 reach{bound.radius, bound.radius};
+    path.capsules_.push_back(detail::segment_capsule(segment));
+    boxes.push_back(detail::tighten_box(segment, {bound.center - reach, bound.center + reach}));
   }
   path.length_ = s;
   path.start_ = segments.front().evaluate_parameter(0.0);
   path.end_ = segments.back().evaluate_parameter(segments.back().parameter_end());
   path.segments_ = std::move(segments);
-  path.tree_.reserve(2 * path.bounds_.size() / leaf_size + 2);
-  path.build_tree(0, static_cast<std::uint32_t>(path.bounds_.size()));
+  path.tree_.reserve(2 * boxes.size() / leaf_size + 2);
+  path.build_tree(boxes, 0, static_cast<std::uint32_t>(boxes.size()));
   // Curvature samples for the feedforward's preview (docs/feedforward.md): every 0.5 m, coarser
   // on paths so long that this would exceed max_curvature_samples.
   path.curvature_spacing_ = std::max(curvature_sample_spacing,

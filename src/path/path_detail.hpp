@@ -23,6 +23,15 @@ double cubic_parameter_at(const PathSegment& segment, double local_s) noexcept;
 SegmentProjection cubic_project(const PathSegment& segment, Vec2 query, double warm_parameter,
                                 bool exhaustive, bool with_arc_length) noexcept;
 
+//! The tightest cheap box around `segment` inside `box` (which must contain it): exact for
+//! lines, the control-point hull of the Bezier form for cubics, `box` itself for arcs.
+SegmentBox tighten_box(const PathSegment& segment, const SegmentBox& box) noexcept;
+
+//! A capsule containing `segment`: the chord and the largest distance of the Bezier control
+//! points from it (cubics), the chord and the sagitta (arcs up to a half turn; longer arcs get
+//! their circle's disk), the segment itself (lines).
+SegmentCapsule segment_capsule(const PathSegment& segment) noexcept;
+
 //! Signed distance with the side of `offset` relative to `tangent` (left positive). A point
 //! straight ahead or behind counts as left; it only happens on clamped segment ends.
 inline double signed_distance(Vec2 tangent, Vec2 offset) noexcept {

@@ -46,6 +46,9 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
         settled = true;
         break;
       }
+      // Farther than the trusted distance from the hint's segment: the point jumped or left the
+      // path, and the global search (O(log N)) is cheaper than a long walk.
+      if (step == 0 && !(local.distance_m <= options.global_search_distance_m)) break;
       const int wanted = local.clamped_at_end ? 1 : (local.clamped_at_start ? -1 : 0);
       if (wanted == 0 || wanted == -direction) {
         settled = true;
@@ -70,6 +73,15 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
     }
   }
   return project_global(point, hint);
+}
+
+ProjectionHint Path::reseed_hint(const Path& previous, const ProjectionHint& hint) const noexcept {
+  ProjectionHint seeded;
+  if (hint.segment_index >= previous.segments_.size() || segments_.empty()) return seeded;
+  const Vec2 where =
+      previous.segments_[hint.segment_index].evaluate_parameter(hint.parameter).position;
+  project_global(where, seeded);
+  return seeded;
 }
 
 bool Path::adopt_extension(Vec2 point, bool start, SegmentProjection& local) const noexcept {

@@ -67,5 +67,29 @@ TEST(RealTime, UpdateDoesNotAllocate) {
   }
 }
 
+// Replanning: set_path() swaps a path built outside the measured section (the planner's job)
+// and re-seeds the hints, without allocating; update() on the new path does not either.
+TEST(RealTime, SetPathDoesNotAllocate) {
+  std::vector<std::shared_ptr<const Path>> plans;
+  for (int plan = 0; plan < 20; ++plan) {
+    std::vector<Vec2> waypoints;
+    for (int k = 0; k < 300; ++k) {
+      const double x = 0.9 * k + 0.1 * plan;
+      waypoints.push_back({x, 10.0 * std::sin(x * 0.01) + 0.05 * plan});
+    }
+    plans.push_back(std::make_shared<const Path>(Path::from_waypoints(waypoints)));
+  }
+  LeadWheelController controller(ControllerParameters{}, plans.front());
+  ControllerOutput output;
+  Vec2 position{0.0, 1.0};
+  const long before = allocation_count.load();
+  for (int k = 0; k < 2000; ++k) {
+    if (k % 5 == 0) controller.set_path(plans[static_cast<std::size_t>(k / 5) % plans.size()]);
+    controller.update({position, 0.0, 10.0, 0.0, 0.02}, output);
+    position.x += 0.1;
+  }
+  EXPECT_EQ(allocation_count.load() - before, 0);
+}
+
 }  // namespace
 }  // namespace smoothsteer

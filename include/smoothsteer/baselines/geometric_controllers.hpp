@@ -17,6 +17,7 @@
 
 #include <memory>
 
+#include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 
@@ -35,6 +36,10 @@ class StanleyController final : public SteeringController {
   Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "stanley"; }
+  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return swap_path(path_, path, rear_hint_, front_hint_);
+  }
 
  private:
   StanleyParameters parameters_;
@@ -57,6 +62,10 @@ class PurePursuitController final : public SteeringController {
   Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "pure_pursuit"; }
+  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return swap_path(path_, path, rear_hint_, front_hint_);
+  }
   //! L_d at speed v [m].
   double lookahead_m(double speed_mps) const noexcept;
 

@@ -23,6 +23,7 @@
 
 #include <memory>
 
+#include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 
@@ -50,6 +51,10 @@ class HosmController final : public SteeringController {
   Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "hosm"; }
+  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return swap_path(path_, path, rear_hint_, front_hint_);
+  }
   const HosmParameters& parameters() const noexcept { return parameters_; }
 
   //! delta' [rad/m] of the law at state (e, psi, delta); exposed for tests.

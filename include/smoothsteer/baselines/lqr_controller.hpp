@@ -15,6 +15,7 @@
 
 #include <memory>
 
+#include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 
@@ -44,6 +45,10 @@ class LqrController final : public SteeringController {
   Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "lqr"; }
+  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return swap_path(path_, path, rear_hint_, front_hint_);
+  }
 
  private:
   LqrParameters parameters_;

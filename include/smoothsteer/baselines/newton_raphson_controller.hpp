@@ -21,6 +21,7 @@
 #include <memory>
 
 #include "smoothsteer/baselines/steering_limits.hpp"
+#include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 
@@ -56,6 +57,10 @@ class NewtonRaphsonController final : public SteeringController {
   Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "newton_raphson"; }
+  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return swap_path(path_, path, rear_hint_, front_hint_);
+  }
 
  private:
   NewtonRaphsonParameters parameters_;

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "smoothsteer/controller/steering_controller.hpp"
 
@@ -64,6 +65,9 @@ class SaturatedController final : public SteeringController {
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return name_.c_str(); }
   //! Forwarded: the wrapped controller decides whether it has a matched-disturbance input.
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return inner_->set_path(std::move(path));
+  }
   bool set_matched_disturbance(double lead_curvature_disturbance) noexcept override {
     return inner_->set_matched_disturbance(lead_curvature_disturbance);
   }

@@ -37,6 +37,10 @@ class LeadWheelController final : public SteeringController {
   //! into the invariant set) for forward driving; the direction is re-detected from v.
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "lead_wheel"; }
+  //! Replanning (SteeringController::set_path): swaps the path and re-seeds the three hints;
+  //! the chain state, direction and delay history carry on, so delta_veh stays continuous
+  //! (src/controller/lead_wheel_set_path.cpp).
+  Status set_path(std::shared_ptr<const Path> path) noexcept override;
 
   //! Real-time parameter change (gain scheduling, docs/tuning.md): noexcept, no allocation.
   //! Keeps the commanded delta_veh continuous by re-mapping delta_1 to the new lambda_1

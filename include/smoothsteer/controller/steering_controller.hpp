@@ -3,10 +3,14 @@
 //! The real-time interface shared by the lead-wheel controller and the comparison controllers:
 //! fill a ControllerInput, call update(input, output) once per control period, read the output.
 
+#include <memory>
+
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/status.hpp"
 
 namespace smoothsteer {
+
+class Path;
 
 struct ControllerInput {
   Vec2 rear_axle_position;         //!< rear-axle reference point in the world frame [m]
@@ -48,6 +52,19 @@ class SteeringController {
   //! Restarts from rest with the measured steering angle of the real vehicle [rad].
   virtual void reset(double measured_steering_angle_rad = 0.0) noexcept = 0;
   virtual const char* name() const noexcept = 0;
+  //! Replanning: replaces the reference path between two update() calls (docs/replanning.md).
+  //! noexcept and allocation free; the controller's state (and so its command) carries on
+  //! continuously and its projection hints are re-seeded on the new path near where they were.
+  //! Threading contract: build the Path in another thread, hand it over as a shared_ptr, and
+  //! call set_path() from the control thread (or under the same lock as update()); it takes
+  //! effect at the next update(). The previous path is released here: keep another reference
+  //! to it (e.g. the planner keeps its last path) if the control thread must not free memory.
+  //! Returns invalid_input for a null path (the old one stays), unsupported if the controller
+  //! cannot replace its path.
+  virtual Status set_path(std::shared_ptr<const Path> path) noexcept {
+    (void)path;
+    return Status::unsupported;
+  }
   //! Evaluation hook: injects a matched disturbance kappa_d [1/m] into the controller's own
   //! model where it has one (the lead wheel's curvature of the trailer chain). Returns false if
   //! the controller has no such input; simulations then bend the plant's path instead.

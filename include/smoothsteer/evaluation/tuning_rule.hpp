@@ -8,7 +8,7 @@
 //!      limits (the SaturatedController clamps and counts);
 //!   3. the chosen configuration is, lexicographically: admissible (no clamped update and no
 //!      divergence on any training scenario) first, then the smallest worst-case max |e| over
-//!      the training scenarios, then the smallest mean std of the command rate, then the
+//!      the training scenarios, then the smallest mean RMS of the held command's rate, then the
 //!      grid order;
 //!   4. it is reported on the *held-out* scenarios only (other speeds or paths), so that no
 //!      reported row was chosen in-sample.
@@ -59,7 +59,8 @@ struct ScenarioScore {
   std::string scenario;
   double max_abs_e_m = 0.0;                  //!< rear axle, whole run
   double max_abs_e_after_reaching_m = -1.0;  //!< rear axle after reaching; -1: not reached
-  double rate_std_radps = 0.0;               //!< std of the command's rate
+  double held_rate_rms_radps = 0.0;          //!< RMS of the held command's rate (sim/metrics)
+  double actual_rate_rms_radps = 0.0;        //!< RMS of the actuator output's rate
   double max_side_slip_rad = 0.0;
   long clamped_updates = 0;  //!< updates the saturation clamped (above the limits)
   bool diverged = false;     //!< max |e| > divergence_m or a non-finite sample

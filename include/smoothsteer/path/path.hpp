@@ -107,18 +107,16 @@ class Path {
   PathProjection project(Vec2 point, ProjectionHint& hint,
                          const ProjectionOptions& options) const noexcept;
 
+  //! For replanning: a hint on this path at the point nearest to where `hint` pointed on
+  //! `previous` (a global projection, O(log N), allocation free). An empty hint stays empty.
+  ProjectionHint reseed_hint(const Path& previous, const ProjectionHint& hint) const noexcept;
+
  private:
-  //! A circle enclosing one segment: lets the global search skip segments cheaply.
-  struct SegmentBound {
-    Vec2 center;
-    double radius = 0.0;
-  };
   //! Node of the bounding-volume hierarchy over consecutive segments [first, first + count):
   //! an axis-aligned box. Nodes are stored depth first: the left child follows its parent, the
   //! right child sits at `right`. Leaves hold at most leaf_size segments.
   struct BoxNode {
-    Vec2 lower;
-    Vec2 upper;
+    SegmentBox box;
     std::uint32_t first = 0;
     std::uint32_t count = 0;
     std::uint32_t right = 0;
@@ -130,8 +128,10 @@ class Path {
 
   //! Sets arc lengths, bounds and cached end poses; the segments are already validated.
   static Path assemble(std::vector<PathSegment> segments, bool closed);
-  //! Builds tree_ over [first, first + count) and returns the node's index.
-  std::uint32_t build_tree(std::uint32_t first, std::uint32_t count);
+  //! Builds tree_ over segments [first, first + count), whose boxes are `boxes`, and returns
+  //! the node's index.
+  std::uint32_t build_tree(const std::vector<SegmentBox>& boxes, std::uint32_t first,
+                           std::uint32_t count);
   PathProjection project_global(Vec2 point, ProjectionHint& hint) const noexcept;
   //! Distance from `point` to the start (start = true) or end extension half-line of an open
   //! path, or infinity if its closest point is not strictly on the half-line.
@@ -146,7 +146,7 @@ class Path {
                                    ProjectionHint& hint) const noexcept;
 
   std::vector<PathSegment> segments_;
-  std::vector<SegmentBound> bounds_;
+  std::vector<SegmentCapsule> capsules_;  //!< one per segment, contains it
   std::vector<BoxNode> tree_;
   PathPoint start_;  //!< pose at s = 0, for the start extension
   PathPoint end_;    //!< pose at s = length(), for the end extension

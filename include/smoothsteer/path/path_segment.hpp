@@ -28,6 +28,20 @@ struct SegmentProjection {
   bool clamped_at_end = false;
 };
 
+//! An axis-aligned box [lower, upper] [m].
+struct SegmentBox {
+  Vec2 lower;
+  Vec2 upper;
+};
+
+//! All points within `radius` of the line segment [from, to] [m]: a tight container of a short
+//! curve (its chord and the largest deviation from it), whose distance is a cheap lower bound.
+struct SegmentCapsule {
+  Vec2 from;
+  Vec2 to;
+  double radius = 0.0;
+};
+
 //! A plain segment record. Lines and arcs are described by their start pose and curvature
 //! (local parameter = local arc length); cubics by polynomial coefficients
 //! x(t) = x[0] + x[1] t + x[2] t^2 + x[3] t^3 (same for y), t in [0, t_end], which the spline

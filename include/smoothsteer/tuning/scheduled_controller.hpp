@@ -5,6 +5,7 @@
 //! before the control step. Real time: noexcept, no allocation.
 
 #include <memory>
+#include <utility>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
@@ -22,6 +23,10 @@ class ScheduledController final : public SteeringController {
 
   const GainSchedule& schedule() const noexcept { return schedule_; }
   const LeadWheelController& controller() const noexcept { return controller_; }
+  //! Replanning, forwarded to the inner controller (see SteeringController::set_path).
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return controller_.set_path(std::move(path));
+  }
   //! Forwarded to the inner controller (evaluation hook, see LeadWheelController).
   bool set_matched_disturbance(double kappa_d) noexcept override {
     return controller_.set_matched_disturbance(kappa_d);
