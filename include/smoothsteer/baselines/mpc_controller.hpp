@@ -27,6 +27,7 @@
 #include <span>
 
 #include "smoothsteer/baselines/steering_limits.hpp"
+#include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 
@@ -76,6 +77,11 @@ class MpcController final : public SteeringController {
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override {
     return parameters_.solver == MpcSolver::constrained ? "mpc_constrained" : "mpc";
+  }
+  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints; the
+  //! command history and the steering estimate carry on.
+  Status set_path(std::shared_ptr<const Path> path) noexcept override {
+    return swap_path(path_, path, rear_hint_, front_hint_);
   }
 
   const MpcParameters& parameters() const noexcept { return parameters_; }
