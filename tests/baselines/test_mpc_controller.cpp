@@ -191,6 +191,23 @@ TEST(MpcController, ConstrainedEqualsUnconstrainedWhenNoConstraintIsActive) {
   }
 }
 
+TEST(MpcController, SetPathSwapsTheReferenceAndKeepsTheCommand) {
+  Case c;
+  c.position = {0.0, 0.5};
+  MpcController controller(MpcParameters{}, path_of(c));
+  ControllerOutput output;
+  ASSERT_EQ(controller.update({c.position, 0.0, 10.0, 0.0, 0.02}, output), Status::ok);
+  const double before = output.steering_angle_rad;
+  EXPECT_EQ(controller.set_path(nullptr), Status::invalid_input);
+  // The same line shifted 0.5 m left: the car is on it, so the MPC eases off, continuously.
+  EXPECT_EQ(controller.set_path(
+                std::make_shared<const Path>(Path::straight_line({-50.0, 0.5}, 0.0, 500.0))),
+            Status::ok);
+  ASSERT_EQ(controller.update({c.position, 0.0, 10.0, 0.0, 0.02}, output), Status::ok);
+  EXPECT_NEAR(output.diagnostics.lateral_error_m, 0.0, 1e-9);
+  EXPECT_LE(std::abs(output.steering_angle_rad - before), 0.6 * 0.02 + 1e-12);
+}
+
 TEST(MpcController, ValidationNamesTheField) {
   MpcParameters parameters;
   parameters.horizon_steps = 1;

@@ -78,7 +78,8 @@ class MpcController final : public SteeringController {
   const char* name() const noexcept override {
     return parameters_.solver == MpcSolver::constrained ? "mpc_constrained" : "mpc";
   }
-  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
+  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints; the
+  //! command history and the steering estimate carry on.
   Status set_path(std::shared_ptr<const Path> path) noexcept override {
     return swap_path(path_, path, rear_hint_, front_hint_);
   }
