@@ -33,16 +33,30 @@ std::shared_ptr<const Path> straight_path() {
   return path;
 }
 
-ControllerParameters parameters_of_order(int order) {
+//! How the lead wheel's target is computed (docs/feedforward.md).
+enum class Law {
+  defaults,  //!< ControllerParameters{}: feedforward without rate limit, rear-axle target
+  preview,   //!< rate-limited feedforward with preview, as the certified schedules use it
+  paper,     //!< the paper's law: no feedforward, the lead wheel on the path
+};
+
+ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
   ControllerParameters parameters;
   parameters.order = order;
   parameters.lead_curvature_bound = 0.1;
+  if (law == Law::preview) parameters.feedforward_curvature_rate = 0.005;
+  if (law == Law::paper) {
+    parameters.feedforward_share = 0.0;
+    parameters.boundary_layer = 0.0;
+    parameters.cornering_target = CorneringTarget::lead_wheel;
+  }
   return parameters;
 }
 
 //! Poses of a closed loop that starts 2 m off the path and then tracks it.
-std::vector<ControllerInput> recorded_inputs(const std::shared_ptr<const Path>& path, int order) {
-  LeadWheelController controller(parameters_of_order(order), path);
+std::vector<ControllerInput> recorded_inputs(const std::shared_ptr<const Path>& path, int order,
+                                             Law law) {
+  LeadWheelController controller(parameters_of_order(order, law), path);
   KinematicLoopOptions options;
   options.speed_mps = 10.0;
   options.duration_s = 200.0;
@@ -57,10 +71,11 @@ std::vector<ControllerInput> recorded_inputs(const std::shared_ptr<const Path>& 
   return inputs;
 }
 
-void update_cost(benchmark::State& state, const std::shared_ptr<const Path>& path) {
+void update_cost(benchmark::State& state, const std::shared_ptr<const Path>& path,
+                 Law law = Law::defaults) {
   const int order = static_cast<int>(state.range(0));
-  const std::vector<ControllerInput> inputs = recorded_inputs(path, order);
-  LeadWheelController controller(parameters_of_order(order), path);
+  const std::vector<ControllerInput> inputs = recorded_inputs(path, order, law);
+  LeadWheelController controller(parameters_of_order(order, law), path);
   ControllerOutput output;
   std::size_t index = 0;
   for (auto _ : state) {
@@ -76,6 +91,12 @@ void BM_UpdateStraightLine(benchmark::State& state) {
 }
 void BM_UpdateCurvedPath10k(benchmark::State& state) {
   update_cost(state, curved_path());
+}
+void BM_UpdateCurvedPath10kPreview(benchmark::State& state) {
+  update_cost(state, curved_path(), Law::preview);
+}
+void BM_UpdateCurvedPath10kPaperLaw(benchmark::State& state) {
+  update_cost(state, curved_path(), Law::paper);
 }
 
 //! Worst case: 30 m from the 10 000-segment path every projection is a global search.
@@ -105,6 +126,8 @@ BENCHMARK(BM_UpdateCurvedPath10k)
     ->Arg(4)
     ->Repetitions(5)
     ->ReportAggregatesOnly(true);
+BENCHMARK(BM_UpdateCurvedPath10kPreview)->Arg(1)->Arg(2);
+BENCHMARK(BM_UpdateCurvedPath10kPaperLaw)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateFarFromCurvedPath10k)->Arg(2)->Repetitions(3)->ReportAggregatesOnly(true);
 
 }  // namespace

@@ -4,15 +4,13 @@
 # timeout or running out of memory fails the run (exit 1); the input that did it is kept in
 # build/asan/fuzz-artifacts/ and printed so it can be replayed: build/asan/fuzz/<target> <file>.
 #   SMOOTHSTEER_FUZZ_SECONDS  time per target (default 25)
-#   SMOOTHSTEER_FUZZ_TARGETS  targets to run (default: the four below)
-# fuzz_schedule_csv is built but not run by default: the schedule reader (src/tuning, owned by
-# issue 8) still converts a region cell of 1e300 to int, undefined behaviour that the fuzzer
-# finds at random (fuzz/known_defects/schedule_region_1e300.csv replays it). Add it to the
-# default list when that reader validates its cells.
+#   SMOOTHSTEER_FUZZ_TARGETS  targets to run (default: all five below)
+# fuzz/known_defects/schedule_region_1e300.csv replays the schedule reader's former int overflow
+# of a region cell (now rejected: the reader checks every cell before converting it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${SMOOTHSTEER_FUZZ_SECONDS:-25}"
-targets="${SMOOTHSTEER_FUZZ_TARGETS:-fuzz_scenario fuzz_vehicle fuzz_waypoint_csv fuzz_set_override}"
+targets="${SMOOTHSTEER_FUZZ_TARGETS:-fuzz_scenario fuzz_vehicle fuzz_waypoint_csv fuzz_set_override fuzz_schedule_csv}"
 artifacts="build/asan/fuzz-artifacts"
 mkdir -p "$artifacts"
 passed=0

@@ -12,7 +12,10 @@
 
 #include "commands.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
+#include "smoothsteer/io/config_section.hpp"
+#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
+#include "smoothsteer/tuning/path_demand.hpp"
 #include "smoothsteer/tuning/schedule_files.hpp"
 
 namespace smoothsteer::cli {
@@ -25,6 +28,9 @@ struct TuneArguments {
   int order = 2;
   double max_steering_acceleration = std::numeric_limits<double>::quiet_NaN();
   double max_steering_rate = std::numeric_limits<double>::quiet_NaN();
+  double max_lateral_acceleration = std::numeric_limits<double>::quiet_NaN();
+  std::string path_file;
+  std::string certificate = "feedforward";
   TuningOptions options;
 };
 
@@ -73,6 +79,25 @@ void print_summary(const GainSchedule& schedule, std::ostream& out) {
   }
 }
 
+//! The path of a YAML file: a scenario file (its `path:` section) or a bare path section, in any
+//! of the scenario path forms (docs/scenarios.md).
+std::shared_ptr<const Path> load_path_file(const std::string& file) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file);
+  } catch (const YAML::Exception& error) {
+    throw std::invalid_argument(file + ": cannot read path file: " + error.what());
+  }
+  if (!root.IsMap()) throw std::invalid_argument(file + ": a path file must be a YAML map");
+  const bool scenario = static_cast<bool>(root["path"]);
+  io::ConfigSection section(scenario ? root["path"] : root, scenario ? "path" : "", file);
+  const auto slash = file.find_last_of('/');
+  const std::string directory = slash == std::string::npos ? "." : file.substr(0, slash);
+  auto path = io::make_path(section, directory);
+  section.finish();
+  return path;
+}
+
 void run_tune(const TuneArguments& arguments) {
   VehicleLimits vehicle = load_vehicle_limits(arguments.vehicle_file);
   if (!std::isnan(arguments.max_steering_rate)) {
@@ -81,22 +106,42 @@ void run_tune(const TuneArguments& arguments) {
   if (!std::isnan(arguments.max_steering_acceleration)) {
     vehicle.max_steering_acceleration_radps2 = arguments.max_steering_acceleration;
   }
+  if (!std::isnan(arguments.max_lateral_acceleration)) {
+    vehicle.max_lateral_acceleration_mps2 = arguments.max_lateral_acceleration;
+  }
   TuningOptions options = arguments.options;
   options.order = arguments.order;
+  options.certificate =
+      arguments.certificate == "box" ? Certificate::box : Certificate::feedforward;
+  if (!arguments.path_file.empty()) {
+    const PathDemand demand = path_demand(*load_path_file(arguments.path_file));
+    options.path_curvature_bound = std::max(options.path_curvature_bound, demand.max_curvature);
+    options.path_curvature_rate_bound =
+        std::isinf(options.path_curvature_rate_bound)
+            ? demand.max_curvature_rate
+            : std::max(options.path_curvature_rate_bound, demand.max_curvature_rate);
+    std::cout << "path " << arguments.path_file << ": max |kappa| " << demand.max_curvature
+              << " 1/m, max |d kappa/ds| " << demand.max_curvature_rate << " 1/m^2\n";
+  }
   const std::vector<double> speeds = parse_speeds(arguments.speeds);
   // The schedule writer renames its file into place: never over a device or a link.
   io::require_regular_file_or_absent(arguments.out, "--out");
-  StaticMapOptions map_options;
-  map_options.max_steering_angle_rad =
-      std::max(map_options.max_steering_angle_rad, std::min(1.49, vehicle.max_steering_angle_rad));
-  const StaticMap map(map_options);
-  const GainSchedule schedule = compute_gain_schedule(vehicle, options, speeds, map);
+  GainSchedule schedule;
+  if (options.certificate == Certificate::feedforward) {
+    schedule = compute_feedforward_schedule(vehicle, options, speeds);
+  } else {
+    StaticMapOptions map_options;
+    map_options.max_steering_angle_rad = std::max(map_options.max_steering_angle_rad,
+                                                  std::min(1.49, vehicle.max_steering_angle_rad));
+    schedule = compute_gain_schedule(vehicle, options, speeds, StaticMap(map_options));
+  }
   write_schedule_csv(schedule, arguments.out);
   std::cout << "vehicle " << arguments.vehicle_file << ": lambda_veh " << vehicle.wheelbase_m
             << " m, limits " << vehicle.max_steering_angle_rad << " rad, "
             << vehicle.max_steering_rate_radps << " rad/s, "
-            << vehicle.max_steering_acceleration_radps2 << " rad/s^2; order n = " << options.order
-            << "\n";
+            << vehicle.max_steering_acceleration_radps2 << " rad/s^2, lateral acceleration "
+            << vehicle.max_lateral_acceleration_mps2 << " m/s^2; order n = " << options.order
+            << ", certificate " << arguments.certificate << "\n";
   print_summary(schedule, std::cout);
   std::cout << "wrote " << schedule.entries().size() << " speeds to " << arguments.out << "\n";
 }
@@ -125,9 +170,26 @@ void add_tune_command(CLI::App& app) {
   tune->add_option("--min-lead-curvature", arguments->options.min_lead_curvature_bound,
                    "smallest admissible kbar_l [1/m]")
       ->capture_default_str();
-  tune->add_option("--path-curvature", arguments->options.path_curvature_bound,
-                   "largest reference-path curvature k_rob must cover [1/m]")
+  tune->add_option("--certificate", arguments->certificate,
+                   "feedforward (curvature feedforward, tight certificate) or box (the paper's "
+                   "worst case over the invariant box)")
+      ->check(CLI::IsMember({"feedforward", "box"}))
       ->capture_default_str();
+  tune->add_option("--path", arguments->path_file,
+                   "scenario or path YAML whose path sets --path-curvature and "
+                   "--path-curvature-rate");
+  tune->add_option("--path-curvature", arguments->options.path_curvature_bound,
+                   "largest reference-path curvature [1/m]: the feedforward covers it (box: "
+                   "k_rob covers it)")
+      ->capture_default_str();
+  tune->add_option("--path-curvature-rate", arguments->options.path_curvature_rate_bound,
+                   "largest |d kappa/ds| of the path [1/m^2] (default: unknown, inf)");
+  tune->add_option("--feedforward-rate-share", arguments->options.feedforward_rate_share,
+                   "largest share of the certified rate budget the feedforward's curvature rate "
+                   "may take (the switching part gets the rest)")
+      ->capture_default_str();
+  tune->add_option("--max-lateral-acceleration", arguments->max_lateral_acceleration,
+                   "friction limit mu g [m/s^2]; default from the vehicle file's tires");
   tune->add_option("--disturbance", arguments->options.matched_disturbance_curvature,
                    "matched disturbance kappa_d k_rob must cover [1/m]")
       ->capture_default_str();

@@ -1,5 +1,7 @@
 #include "smoothsteer/controller/controller_parameters.hpp"
 
+#include "smoothsteer/controller/steering_certificate.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -55,6 +57,15 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
   }
   if (!std::isfinite(p.k_rob) || p.k_rob < 0.0 || p.k_rob >= 1.0) {
     return fail(text("k_rob"), p.k_rob, text("must be in [0, 1) (eq. sigma divides by 1 - k_rob)"));
+  }
+  if (!std::isfinite(p.feedforward_share) || p.feedforward_share < 0.0 ||
+      p.feedforward_share >= 1.0) {
+    return fail(text("feedforward_share"), p.feedforward_share,
+                text("must be in [0, 1) (the switching part needs kbar_n - kbar_ff > 0)"));
+  }
+  if (std::isnan(p.feedforward_curvature_rate) || p.feedforward_curvature_rate < 0.0) {
+    return fail(text("feedforward_curvature_rate"), p.feedforward_curvature_rate,
+                text("must be >= 0 (+inf: no rate limit)"));
   }
   if (!std::isfinite(p.boundary_layer) || p.boundary_layer < 0.0) {
     return fail(text("boundary_layer"), p.boundary_layer, text("must be finite and >= 0"));
@@ -117,17 +128,18 @@ ControllerParameters ControllerParameters::paper_c1(double vehicle_wheelbase_m,
   ControllerParameters parameters;
   parameters.order = 2;
   parameters.vehicle_wheelbase_m = vehicle_wheelbase_m;
-  const double squared =
-      vehicle_wheelbase_m * vehicle_wheelbase_m - lead_wheelbase_m * lead_wheelbase_m;
-  if (!(squared > 0.0)) {
+  parameters.wheelbases_m[0] =
+      cornering_front_wheelbase(vehicle_wheelbase_m, lead_wheelbase_m * lead_wheelbase_m);
+  if (!(parameters.wheelbases_m[0] > 0.0)) {
     throw std::invalid_argument(describe("lead wheelbase lambda_l", lead_wheelbase_m,
                                          "must be < vehicle_wheelbase_m (eq. cornering_constr)"));
   }
-  parameters.wheelbases_m[0] = std::sqrt(squared);  // eq. (cornering_constr)
   parameters.wheelbases_m[1] = lead_wheelbase_m;
   parameters.lead_curvature_bound = lead_curvature_bound;
   parameters.k_rob = k_rob;
   parameters.cornering_target = CorneringTarget::lead_wheel;
+  parameters.feedforward_share = 0.0;  // the paper's law: no feedforward
+  parameters.boundary_layer = 0.0;     // and kappa_n = kbar_n sign(sigma)
   parameters.validate();
   return parameters;
 }
@@ -141,6 +153,8 @@ ControllerParameters ControllerParameters::paper_c0(double vehicle_wheelbase_m,
   parameters.lead_curvature_bound = front_curvature_bound;
   parameters.k_rob = k_rob;
   parameters.cornering_target = CorneringTarget::lead_wheel;
+  parameters.feedforward_share = 0.0;  // the paper's law: no feedforward
+  parameters.boundary_layer = 0.0;     // and kappa_n = kbar_n sign(sigma)
   parameters.validate();
   return parameters;
 }

@@ -5,11 +5,15 @@
 #include <stdexcept>
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/controller/feedforward.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace smoothsteer {
 namespace {
+
+//! Step of the central differences of the rear-axle target curve [m] (rear_axle_target_curve).
+constexpr double kTargetCurveStep = 0.5;
 
 bool finite(double value) noexcept {
   return std::isfinite(value);
@@ -35,6 +39,7 @@ LeadWheelController::LeadWheelController(const ControllerParameters& parameters,
 void LeadWheelController::apply_parameters(const ControllerParameters& parameters) noexcept {
   parameters_ = parameters;
   bounds_ = compute_chain_bounds(parameters_);
+  certificate_ = feedforward_certificate(parameters_, bounds_);
   chain_length_squared_ = 0.0;
   double shortest = parameters_.order > 0 ? parameters_.wheelbases_m[0] : 0.0;
   for (int i = 0; i < parameters_.order; ++i) {
@@ -64,12 +69,26 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   const int n = parameters_.order;
   if (n == 0) {
     angles_.fill(0.0);
+    feedforward_curvature_ = 0.0;
     last_steering_angle_ = vehicle_steering_angle;
     return;
   }
   const double front = std::clamp(front_angle_from_vehicle(vehicle_steering_angle),
                                   -bounds_.angle[0], bounds_.angle[0]);
-  stationary_chain(front, parameters_.wheelbases_m.data(), n, angles_);
+  // The certificate starts from stationary cornering on kappa_ff (steering_certificate.hpp): the
+  // lead curvature of the stationary chain, saturated at kbar_ff, is the initial kappa_ff.
+  const double rear_curvature = std::tan(front) / parameters_.wheelbases_m[0];
+  initialise_chain_on_feedforward(stationary_lead_curvature(rear_curvature, chain_length_squared_));
+}
+
+void LeadWheelController::initialise_chain_on_feedforward(double feedforward_curvature) noexcept {
+  const int n = parameters_.order;
+  const double bound = parameters_.feedforward_curvature_bound();
+  feedforward_curvature_ = std::clamp(feedforward_curvature, -bound, bound);
+  const double rear_curvature =
+      stationary_rear_curvature(feedforward_curvature_, chain_length_squared_);
+  stationary_chain(std::atan(parameters_.wheelbases_m[0] * rear_curvature),
+                   parameters_.wheelbases_m.data(), n, angles_);
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
@@ -94,6 +113,9 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
         front_angle_derivatives(angles_, old_wheelbases, n, 0.0).first;
   }
   apply_parameters(parameters);
+  const double feedforward_bound = parameters_.feedforward_curvature_bound();
+  feedforward_curvature_ =
+      std::clamp(feedforward_curvature_, -feedforward_bound, feedforward_bound);
   // No clamping into the new sets: a jump of the state would be a kink in delta_veh. A state
   // outside a shrunken set returns under the chain's flow (integrate_chain never pushes it out).
   if (n > 0) angles_[0] = front_angle_from_vehicle(steering);
@@ -124,8 +146,27 @@ double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
   return vehicle_steering_angle(angles_[0]);
 }
 
+TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const noexcept {
+  // The path's curvature as the rate-limited feedforward should see it (feedforward.hpp): with a
+  // finite L_ff the previewed samples (a jump becomes a ramp centred on it), else the
+  // projection's own value and the path at +- one step.
+  const double rate = parameters_.feedforward_curvature_rate;
+  const bool rear_target = parameters_.cornering_target == CorneringTarget::rear_axle;
+  PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
+  if (std::isfinite(rate) && rate > 0.0) {
+    const double bound = std::max(parameters_.feedforward_curvature_bound(), 1e-12);
+    curvature = preview_curvature(*path_, lead.arc_length_m, kTargetCurveStep, rate, bound);
+  } else if (rear_target) {
+    curvature.before = path_->evaluate(lead.arc_length_m - kTargetCurveStep).curvature;
+    curvature.after = path_->evaluate(lead.arc_length_m + kTargetCurveStep).curvature;
+  }
+  if (!rear_target) return {0.0, 0.0, curvature.at};
+  return rear_axle_target_curve(curvature.before, curvature.at, curvature.after, kTargetCurveStep,
+                                chain_length_squared_);
+}
+
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
-    Vec2 rear_position, double rear_travel_heading) noexcept {
+    Vec2 rear_position, double rear_travel_heading, bool refresh_target) noexcept {
   // Lead-wheel state from projecting its own position (paper Sec. II end, paper_notes §6).
   const int n = parameters_.order;
   ChainGeometry geometry;
@@ -133,16 +174,18 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
                  geometry);
   const auto lead = static_cast<std::size_t>(n);
   LeadWheelState state;
-  static constexpr Path::ProjectionOptions lead_options{.compute_arc_length = false};
+  // The target curve is refreshed once per period, which needs the arc length of the closest
+  // point; the other sub-steps only need e and the heading (and skip the quadrature on splines).
+  const Path::ProjectionOptions lead_options{.compute_arc_length = refresh_target};
   state.projection = path_->project(geometry.position[lead], lead_hint_, lead_options);
-  state.relative_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
-  double target_offset = 0.0;
-  if (parameters_.cornering_target == CorneringTarget::rear_axle) {
-    target_offset = rear_axle_cornering_offset(state.projection.curvature, chain_length_squared_);
-  }
-  state.law =
-      dubins_switching_law(state.projection.lateral_error_m - target_offset, state.relative_heading,
-                           parameters_.lead_curvature_bound, parameters_);
+  if (refresh_target) target_ = target_curve(state.projection);
+  const double path_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
+  const double error = state.projection.lateral_error_m - target_.offset;
+  state.relative_heading = wrap_angle(path_heading - target_.heading);
+  state.feedforward_target =
+      frenet_feedforward_curvature(target_.curvature, error, state.relative_heading);
+  state.law = dubins_switching_law(error, state.relative_heading,
+                                   parameters_.switching_curvature_bound(), parameters_);
   return state;
 }
 
@@ -203,13 +246,25 @@ Status LeadWheelController::update(const ControllerInput& input,
   double heading = travel_heading(law_pose.heading_rad);
   LeadWheelState first{};
   double applied_curvature = 0.0;
+  const double feedforward_bound = parameters_.feedforward_curvature_bound();
+  const double feedforward_step =
+      step_length > 0.0 ? parameters_.feedforward_curvature_rate * step_length : 0.0;
   for (int step = 0; step < steps; ++step) {
-    const LeadWheelState lead = evaluate_lead_wheel(position, heading);
+    const LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0);
     if (step == 0) first = lead;
-    applied_curvature = lead.law.curvature + matched_disturbance_;
+    // kappa_ff moves towards its target by at most L_ff per metre, linearly within the sub-step,
+    // and stays within +-kbar_ff (the split the certificate assumes).
+    const double feedforward_start = feedforward_curvature_;
+    const double wanted =
+        std::clamp(lead.feedforward_target, -feedforward_bound, feedforward_bound);
+    feedforward_curvature_ +=
+        std::clamp(wanted - feedforward_curvature_, -feedforward_step, feedforward_step);
+    const double switching = lead.law.curvature + matched_disturbance_;
+    applied_curvature = feedforward_curvature_ + switching;
     if (n == 0 || step_length <= 0.0) break;
     const double front_before = angles_[0];
-    integrate_chain(angles_, wheelbases, n, applied_curvature, step_length, bounds_.angle);
+    integrate_chain(angles_, wheelbases, n, feedforward_start + switching, applied_curvature,
+                    step_length, bounds_.angle);
     // Rear-axle prediction along an arc of the mean chain curvature over the sub-step.
     const double curvature = 0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0];
     const double half_turn = 0.5 * curvature * step_length;
@@ -227,9 +282,7 @@ Status LeadWheelController::update(const ControllerInput& input,
     const double ratio = parameters_.vehicle_wheelbase_m / wheelbases[0];
     const double front = angles_[0];
     const double gain = vehicle_angle_gain(front, ratio);  // d delta_veh / d delta_1
-    // d gain / d delta_1 = -gain^2 sin(2 delta_1) (r^2 - 1) / r
-    const double curvature_of_gain =
-        -gain * gain * std::sin(2.0 * front) * (ratio * ratio - 1.0) / ratio;
+    const double curvature_of_gain = vehicle_angle_gain_slope(front, ratio);
     const FrontAngleDerivatives d =
         front_angle_derivatives(angles_, wheelbases, n, applied_curvature);
     const double speed = std::abs(input.speed_mps);
@@ -271,7 +324,8 @@ Status LeadWheelController::update(const ControllerInput& input,
   diagnostics.lead_lateral_error_m = first.projection.lateral_error_m;
   diagnostics.lead_heading_error_rad = first.relative_heading;
   diagnostics.sliding_variable = law.sliding_variable;
-  diagnostics.lead_curvature = law.curvature;
+  diagnostics.lead_curvature = applied_curvature;
+  diagnostics.feedforward_curvature = feedforward_curvature_;
   diagnostics.path_arc_length_m = rear_projection.arc_length_m;
   diagnostics.path_curvature = rear_projection.curvature;
   diagnostics.fictive_steering_angle_rad = n > 0 ? angles_[0] : steering;

@@ -11,6 +11,11 @@ double vehicle_angle_gain(double front_angle, double ratio) noexcept {
   return ratio / (c * c + ratio * ratio * s * s);
 }
 
+double vehicle_angle_gain_slope(double front_angle, double ratio) noexcept {
+  const double gain = vehicle_angle_gain(front_angle, ratio);
+  return -gain * gain * std::sin(2.0 * front_angle) * (ratio * ratio - 1.0) / ratio;
+}
+
 namespace {
 
 //! |d delta_1/ds| in the worst case for a given delta_1 inside the invariant set:
@@ -21,7 +26,7 @@ double worst_front_rate(double front_angle, double kbar_1, double lambda_1) noex
 
 }  // namespace
 
-ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
+ChainBounds compute_invariant_sets(const ControllerParameters& parameters) noexcept {
   ChainBounds bounds;
   const int n = parameters.order;
   bounds.curvature[static_cast<std::size_t>(n)] = parameters.lead_curvature_bound;
@@ -34,6 +39,12 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
     bounds.curvature[index - 1] = kbar / std::sqrt(1.0 - product * product);  // paper_notes §2
   }
   bounds.steering_angle_rad = std::atan(parameters.vehicle_wheelbase_m * bounds.curvature[0]);
+  return bounds;
+}
+
+ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
+  ChainBounds bounds = compute_invariant_sets(parameters);
+  const int n = parameters.order;
   if (n == 0) {
     bounds.steering_rate_per_meter = std::numeric_limits<double>::infinity();
     return bounds;
@@ -156,22 +167,35 @@ void tangent_rates(const ChainAngles& tangent, const double* wheelbases, int ord
 
 void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
                      double ds, const ChainAngles& angle_bound) noexcept {
+  integrate_chain(delta, wheelbases, order, lead_curvature, lead_curvature, ds, angle_bound);
+}
+
+void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
+                     double lead_curvature_end, double ds,
+                     const ChainAngles& angle_bound) noexcept {
   ChainAngles t{}, k1{}, k2{}, k3{}, k4{}, probe{};
   const auto n = static_cast<std::size_t>(order);
+  const double lead_curvature_mid = 0.5 * (lead_curvature + lead_curvature_end);
   for (std::size_t i = 0; i < n; ++i) t[i] = std::tan(delta[i]);
   tangent_rates(t, wheelbases, order, lead_curvature, k1);
   for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + 0.5 * ds * k1[i];
-  tangent_rates(probe, wheelbases, order, lead_curvature, k2);
+  tangent_rates(probe, wheelbases, order, lead_curvature_mid, k2);
   for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + 0.5 * ds * k2[i];
-  tangent_rates(probe, wheelbases, order, lead_curvature, k3);
+  tangent_rates(probe, wheelbases, order, lead_curvature_mid, k3);
   for (std::size_t i = 0; i < n; ++i) probe[i] = t[i] + ds * k3[i];
-  tangent_rates(probe, wheelbases, order, lead_curvature, k4);
+  tangent_rates(probe, wheelbases, order, lead_curvature_end, k4);
   for (std::size_t i = 0; i < n; ++i) {
     const double next = t[i] + ds / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
     // Never outward past the set, never inward by a jump: a state that a retune left outside a
     // shrunken set returns under the chain's own flow (which points inward there), so
     // delta_veh stays C^1 while a gain schedule changes the sets.
-    const double limit = std::max(angle_bound[i], std::abs(delta[i]));
+    // The set of delta_i is invariant only while its input kappa_i is bounded, i.e. while
+    // delta_{i+1} lies in its own set. A retune can leave delta_{i+1} outside a shrunken set:
+    // then delta_i follows the flow unclamped, instead of being frozen at its bound (which
+    // stalled the command and overshot its acceleration, ScheduledLoop.RetuneNeverFreezes...).
+    const bool input_bounded = i + 1 >= n || std::abs(delta[i + 1]) <= angle_bound[i + 1];
+    const double limit = input_bounded ? std::max(angle_bound[i], std::abs(delta[i]))
+                                       : std::numeric_limits<double>::infinity();
     delta[i] = std::clamp(std::atan(next), -limit, limit);
   }
 }

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/tuning/schedule_files.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 
@@ -24,6 +25,16 @@ void read_law_options(ConfigSection& c, ControllerParameters& p) {
   const ControllerParameters defaults;
   p.k_rob = c.number("k_rob", defaults.k_rob, {0.0, 1.0, false, true});
   p.boundary_layer = c.number("boundary_layer", defaults.boundary_layer, Range::non_negative());
+  p.feedforward_share =
+      c.number("feedforward_share", defaults.feedforward_share, {0.0, 1.0, false, true});
+  // Absent: the C++ default, no rate limit (+inf, null in the resolved parameters).
+  if (c.has("feedforward_curvature_rate")) {
+    p.feedforward_curvature_rate =
+        c.required_number("feedforward_curvature_rate", Range::non_negative());
+  } else {
+    p.feedforward_curvature_rate = defaults.feedforward_curvature_rate;
+    c.store("feedforward_curvature_rate", YAML::Node(YAML::NodeType::Null));
+  }
   p.actuator_delay_s = c.number("actuator_delay_s", defaults.actuator_delay_s,
                                 {0.0, ControllerParameters::max_actuator_delay_s});
   p.approach_angle_rad = c.number("approach_angle_rad", defaults.approach_angle_rad,
@@ -64,7 +75,7 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
   } else {
     const double lead = c.number("lead_wheelbase_m", 1.0, {0.0, wheelbase, true, true});
     if (p.order == 2) {
-      p.wheelbases_m[0] = std::sqrt(wheelbase * wheelbase - lead * lead);
+      p.wheelbases_m[0] = cornering_front_wheelbase(wheelbase, lead * lead);
       p.wheelbases_m[1] = lead;
     } else if (p.order == 1) {
       p.wheelbases_m[0] = wheelbase;

@@ -36,6 +36,10 @@ YAML::Node read_vehicle(ConfigSection& c, Scenario& s) {
       c.number("max_steering_angle_rad", v.max_steering_angle_rad, {0.0, 1.5, true, true});
   v.max_steering_rate_radps =
       c.number("max_steering_rate_radps", v.max_steering_rate_radps, Range::positive());
+  if (c.has("max_steering_acceleration_radps2")) {
+    v.max_steering_acceleration_radps2 =
+        c.required_number("max_steering_acceleration_radps2", Range::positive());
+  }
   v.kinematic_below_mps = c.number("kinematic_below_mps", v.kinematic_below_mps, {0.1, 50.0});
   v.kinetic_above_mps = c.number("kinetic_above_mps", v.kinetic_above_mps, {0.1, 50.0});
   v.kinematic_relaxation_s =
@@ -192,11 +196,13 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
 
   ConfigSection metrics = c.section("metrics");
   s.metrics.reaching_threshold_m = metrics.number("reaching_threshold_m", 0.1, Range::positive());
-  // No acceleration limit unless given: +inf internally, null in the resolved parameters (JSON
-  // has no infinity; a huge finite stand-in would read like a real limit).
+  // The vehicle's acceleration limit unless given; none: +inf internally, null in the resolved
+  // parameters (JSON has no infinity; a huge finite stand-in would read like a real limit).
   if (metrics.has("steering_acceleration_limit_radps2")) {
     s.metrics.steering_acceleration_limit_radps2 =
         metrics.required_number("steering_acceleration_limit_radps2", Range::positive());
+  } else if (std::isfinite(s.vehicle.max_steering_acceleration_radps2)) {
+    s.metrics.steering_acceleration_limit_radps2 = s.vehicle.max_steering_acceleration_radps2;
   } else {
     s.metrics.steering_acceleration_limit_radps2 = std::numeric_limits<double>::infinity();
     metrics.store("steering_acceleration_limit_radps2", YAML::Node(YAML::NodeType::Null));

@@ -205,7 +205,45 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   path.segments_ = std::move(segments);
   path.tree_.reserve(2 * boxes.size() / leaf_size + 2);
   path.build_tree(boxes, 0, static_cast<std::uint32_t>(boxes.size()));
+  // Curvature samples for the feedforward's preview (docs/feedforward.md): every 0.5 m, coarser
+  // on paths so long that this would exceed max_curvature_samples.
+  path.curvature_spacing_ = std::max(curvature_sample_spacing,
+                                     path.length_ / static_cast<double>(max_curvature_samples - 1));
+  const auto count =
+      static_cast<std::size_t>(std::ceil(path.length_ / path.curvature_spacing_)) + 1;
+  path.curvature_samples_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double at = std::min(path.length_, static_cast<double>(i) * path.curvature_spacing_);
+    path.curvature_samples_[i] = path.evaluate(at).curvature;
+  }
   return path;
+}
+
+double Path::sampled_curvature(double arc_length_m) const noexcept {
+  if (curvature_samples_.empty() || !std::isfinite(arc_length_m)) return 0.0;
+  double s = arc_length_m;
+  if (closed_) {
+    s = std::fmod(s, length_);
+    if (s < 0.0) s += length_;
+  } else if (s < 0.0 || s > length_) {
+    return 0.0;  // the end extensions are straight
+  }
+  const auto index = static_cast<std::size_t>(std::lround(s / curvature_spacing_));
+  return curvature_samples_[std::min(index, curvature_samples_.size() - 1)];
+}
+
+double Path::curvature_sample(long index) const noexcept {
+  const auto count = static_cast<long>(curvature_samples_.size());
+  if (count == 0) return 0.0;
+  if (closed_) {
+    // The last sample sits at s = length(), the same point as the first.
+    const long period = std::max(1L, count - 1);
+    index %= period;
+    if (index < 0) index += period;
+  } else if (index < 0 || index >= count) {
+    return 0.0;
+  }
+  return curvature_samples_[static_cast<std::size_t>(index)];
 }
 
 PathPoint Path::evaluate(double arc_length_m) const noexcept {

@@ -46,6 +46,22 @@ ControllerParameters parameters_for(const TuningOptions& options, double vehicle
   return second_order_parameters(options.base, vehicle_wheelbase, lead_wheelbase, kbar, k_rob);
 }
 
+}  // namespace
+
+ScheduleEntry blend_entries(const ScheduleEntry& a, const ScheduleEntry& b, double t) noexcept {
+  auto blend = [t](double x, double y) { return x + t * (y - x); };
+  ScheduleEntry e = a;
+  e.lead_wheelbase_m = blend(a.lead_wheelbase_m, b.lead_wheelbase_m);
+  e.lead_curvature_bound = blend(a.lead_curvature_bound, b.lead_curvature_bound);
+  e.k_rob = blend(a.k_rob, b.k_rob);
+  e.feedforward_curvature_bound =
+      blend(a.feedforward_curvature_bound, b.feedforward_curvature_bound);
+  e.feedforward_curvature_rate = blend(a.feedforward_curvature_rate, b.feedforward_curvature_rate);
+  return e;
+}
+
+namespace {
+
 //! Exact worst case of the time-domain derivatives for parameters p at speed v.
 struct Exact {
   double angle, rate, acceleration;
@@ -242,6 +258,18 @@ void TuningOptions::validate() const {
   } else if (!(path_curvature_bound >= 0.0) || !std::isfinite(path_curvature_bound)) {
     text << "TuningOptions: path_curvature_bound = " << path_curvature_bound
          << " must be finite and >= 0";
+  } else if (std::isnan(path_curvature_rate_bound) || path_curvature_rate_bound < 0.0) {
+    text << "TuningOptions: path_curvature_rate_bound = " << path_curvature_rate_bound
+         << " must be >= 0 (+inf: unknown)";
+  } else if (!(feedforward_rate_margin >= 1.0) || !std::isfinite(feedforward_rate_margin)) {
+    text << "TuningOptions: feedforward_rate_margin = " << feedforward_rate_margin
+         << " must be finite and >= 1";
+  } else if (!(feedforward_rate_share > 0.0 && feedforward_rate_share < 1.0)) {
+    text << "TuningOptions: feedforward_rate_share = " << feedforward_rate_share
+         << " must be in (0, 1)";
+  } else if (!(switching_floor_share > 0.0 && switching_floor_share < 1.0)) {
+    text << "TuningOptions: switching_floor_share = " << switching_floor_share
+         << " must be in (0, 1)";
   } else if (!(k_rob_ceiling > 0.0 && k_rob_ceiling < 1.0)) {
     text << "TuningOptions: k_rob_ceiling = " << k_rob_ceiling << " must be in (0, 1)";
   } else if (!(k_rob_floor >= 0.0 && k_rob_floor < k_rob_ceiling)) {
@@ -271,10 +299,7 @@ ControllerParameters GainSchedule::parameters_at(double speed_mps) const noexcep
   }
   const ScheduleEntry& a = entries_[k];
   const ScheduleEntry& b = entries_[std::min(k + 1, last)];
-  auto blend = [t](double x, double y) { return x + t * (y - x); };
-  return parameters_for(
-      options_, vehicle_.wheelbase_m, blend(a.lead_wheelbase_m, b.lead_wheelbase_m),
-      blend(a.lead_curvature_bound, b.lead_curvature_bound), blend(a.k_rob, b.k_rob));
+  return schedule_entry_parameters(options_, vehicle_.wheelbase_m, blend_entries(a, b, t));
 }
 
 std::vector<double> speed_grid(double first_mps, double last_mps, double step_mps) {
@@ -292,10 +317,7 @@ std::vector<double> speed_grid(double first_mps, double last_mps, double step_mp
   return speeds;
 }
 
-GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
-                                   const std::vector<double>& speeds_mps, const StaticMap& map) {
-  vehicle.validate();
-  options.validate();
+void check_speed_grid(const std::vector<double>& speeds_mps) {
   if (speeds_mps.empty()) throw std::invalid_argument("compute_gain_schedule: no speeds given");
   for (std::size_t k = 0; k < speeds_mps.size(); ++k) {
     const double v = speeds_mps[k];
@@ -306,6 +328,26 @@ GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOpt
       throw std::invalid_argument(text.str());
     }
   }
+}
+
+ControllerParameters schedule_entry_parameters(const TuningOptions& options,
+                                               double vehicle_wheelbase_m,
+                                               const ScheduleEntry& entry) noexcept {
+  ControllerParameters p = parameters_for(options, vehicle_wheelbase_m, entry.lead_wheelbase_m,
+                                          entry.lead_curvature_bound, entry.k_rob);
+  p.feedforward_share = entry.feedforward_curvature_bound / entry.lead_curvature_bound;
+  p.feedforward_curvature_rate = entry.feedforward_curvature_rate;
+  return p;
+}
+
+GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
+                                   const std::vector<double>& speeds_mps, const StaticMap& map) {
+  if (options.certificate == Certificate::feedforward) {
+    return compute_feedforward_schedule(vehicle, options, speeds_mps);
+  }
+  vehicle.validate();
+  options.validate();
+  check_speed_grid(speeds_mps);
   if (options.order == 1 && std::isfinite(vehicle.max_steering_acceleration_radps2)) {
     throw std::invalid_argument(
         "order 1 cannot bound the steering acceleration (kappa_f switches, eq. ext1b): set "
@@ -349,12 +391,8 @@ GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOpt
     for (int attempt = 0; attempt < 60; ++attempt) {
       bool ok = true;
       for (const double t : {0.25, 0.5, 0.75}) {
-        auto blend = [t](double x, double y) { return x + t * (y - x); };
-        const ScheduleEntry& a = entries[k];
-        const ScheduleEntry& b = entries[next];
-        const ControllerParameters p = parameters_for(
-            options, vehicle.wheelbase_m, blend(a.lead_wheelbase_m, b.lead_wheelbase_m),
-            blend(a.lead_curvature_bound, b.lead_curvature_bound), blend(a.k_rob, b.k_rob));
+        const ControllerParameters p = schedule_entry_parameters(
+            options, vehicle.wheelbase_m, blend_entries(entries[k], entries[next], t));
         ok = ok && exact_ok(problem, exact_at(problem, p));
       }
       if (ok) break;

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/controller/trailer_chain.hpp"
 
 namespace smoothsteer {
@@ -48,17 +49,19 @@ double steering_angle_bound(const ControllerParameters& parameters) {
 }
 
 double fictive_wheelbase(double vehicle_wheelbase_m, const double* outer_wheelbases, int count) {
-  double squared = vehicle_wheelbase_m * vehicle_wheelbase_m;
-  for (int i = 0; i < count; ++i) squared -= outer_wheelbases[i] * outer_wheelbases[i];
-  if (!std::isfinite(squared) || squared <= 0.0) {
+  double outer = 0.0;
+  for (int i = 0; i < count; ++i) outer += outer_wheelbases[i] * outer_wheelbases[i];
+  const double lambda = cornering_front_wheelbase(vehicle_wheelbase_m, outer);
+  if (!(lambda > 0.0)) {
     std::ostringstream text;
-    text << "fictive wheelbase: lambda_veh^2 - sum lambda_i^2 = " << squared
+    text << "fictive wheelbase: lambda_veh^2 - sum lambda_i^2 = "
+         << vehicle_wheelbase_m * vehicle_wheelbase_m - outer
          << " must be > 0 (eq. cornering_constr: the outer wheelbases must be shorter than "
             "lambda_veh = "
          << vehicle_wheelbase_m << " m)";
     fail(text.str());
   }
-  return std::sqrt(squared);
+  return lambda;
 }
 
 double minimum_k_rob(double matched_disturbance_curvature, double path_curvature_bound,
@@ -94,9 +97,8 @@ ControllerParameters second_order_parameters(const ControllerParameters& base,
   ControllerParameters parameters = base;
   parameters.order = 2;
   parameters.vehicle_wheelbase_m = vehicle_wheelbase_m;
-  const double squared =
-      vehicle_wheelbase_m * vehicle_wheelbase_m - lead_wheelbase_m * lead_wheelbase_m;
-  parameters.wheelbases_m[0] = squared > 0.0 ? std::sqrt(squared) : 0.0;  // eq. cornering_constr
+  parameters.wheelbases_m[0] =
+      cornering_front_wheelbase(vehicle_wheelbase_m, lead_wheelbase_m * lead_wheelbase_m);
   parameters.wheelbases_m[1] = lead_wheelbase_m;
   parameters.lead_curvature_bound = lead_curvature_bound;
   parameters.k_rob = k_rob;

@@ -15,7 +15,10 @@
 namespace smoothsteer {
 namespace {
 
-constexpr std::array<const char*, 10> kColumns{"speed_mps",
+// The last two columns (the feedforward route) are optional when reading: a file without them is
+// a box-route schedule (no feedforward).
+constexpr std::size_t kLegacyColumns = 10;
+constexpr std::array<const char*, 12> kColumns{"speed_mps",
                                                "region",
                                                "fictive_wheelbase_m",
                                                "lead_wheelbase_m",
@@ -24,7 +27,9 @@ constexpr std::array<const char*, 10> kColumns{"speed_mps",
                                                "k_rob",
                                                "max_steering_angle_rad",
                                                "max_steering_rate_radps",
-                                               "max_steering_acceleration_radps2"};
+                                               "max_steering_acceleration_radps2",
+                                               "feedforward_curvature_bound_per_m",
+                                               "feedforward_curvature_rate_per_m2"};
 
 // Keys of the simulation's vehicle schema (vehicles/*.yaml, docs/scenarios.md) that the tuner
 // does not need.
@@ -92,6 +97,18 @@ VehicleLimits load_vehicle_limits(const std::string& yaml_path) {
     limits.max_steering_acceleration_radps2 =
         number(root, yaml_path, "max_steering_acceleration_radps2");
   }
+  // Friction limit mu g from the tires (the smaller mu of the two axles), if the file has them.
+  constexpr double gravity = 9.81;
+  for (const char* tire : {"front_tire", "rear_tire"}) {
+    const YAML::Node node = root[tire];
+    if (!node || !node.IsMap() || !node["friction_mu"]) continue;
+    const double mu = number(node, yaml_path, "friction_mu");
+    if (!(mu > 0.0) || !std::isfinite(mu)) {
+      fail(yaml_path, std::string(tire) + ".friction_mu", "must be finite and > 0");
+    }
+    limits.max_lateral_acceleration_mps2 =
+        std::min(limits.max_lateral_acceleration_mps2, mu * gravity);
+  }
   const std::string error = limits.validation_error();
   if (!error.empty()) throw std::invalid_argument(yaml_path + ": " + error);
   return limits;
@@ -109,9 +126,14 @@ void write_schedule_csv(const GainSchedule& schedule, const std::string& csv_pat
       out << e.speed_mps << ',' << static_cast<int>(e.region) << ',' << e.fictive_wheelbase_m << ','
           << e.lead_wheelbase_m << ',' << e.lead_curvature_bound << ','
           << 1.0 / e.lead_curvature_bound << ',' << e.k_rob << ',' << e.max_steering_angle_rad
-          << ',' << e.max_steering_rate_radps << ',' << e.max_steering_acceleration_radps2 << '\n';
+          << ',' << e.max_steering_rate_radps << ',' << e.max_steering_acceleration_radps2 << ','
+          << e.feedforward_curvature_bound << ',' << e.feedforward_curvature_rate << '\n';
     }
-    if (!out.flush()) throw std::runtime_error("cannot write " + temporary);
+    if (!out.flush()) {
+      out.close();
+      std::remove(temporary.c_str());  // no half-written file is left behind
+      throw std::runtime_error("cannot write " + temporary);
+    }
   }
   if (std::rename(temporary.c_str(), csv_path.c_str()) != 0) {
     std::remove(temporary.c_str());
@@ -124,13 +146,15 @@ GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerPara
   if (!in) throw std::invalid_argument(csv_path + ": cannot open schedule file");
   std::string line;
   std::getline(in, line);
-  std::string expected;
+  std::string expected, legacy;
   for (std::size_t c = 0; c < kColumns.size(); ++c) {
     if (c > 0) expected.push_back(',');
     expected.append(kColumns[c]);
+    if (c + 1 == kLegacyColumns) legacy = expected;
   }
-  if (line != expected)
+  if (line != expected && line != legacy)
     throw std::invalid_argument(csv_path + ": line 1: header must be " + expected);
+  const std::size_t columns = line == expected ? kColumns.size() : kLegacyColumns;
   std::vector<ScheduleEntry> entries;
   VehicleLimits vehicle;
   vehicle.max_steering_angle_rad = vehicle.max_steering_rate_radps = 0.0;
@@ -140,17 +164,31 @@ GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerPara
     std::array<double, kColumns.size()> v{};
     std::istringstream row(line);
     std::string cell;
-    for (std::size_t c = 0; c < kColumns.size(); ++c) {
+    for (std::size_t c = 0; c < columns; ++c) {
       if (!std::getline(row, cell, ',')) {
         throw std::invalid_argument(csv_path + ": line " + std::to_string(number) + ": column " +
                                     kColumns[c] + " missing");
       }
       char* end = nullptr;
       v[c] = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || (std::isnan(v[c]))) {
+      // The whole cell is the number; only the certified acceleration (no limit) and the
+      // feedforward rate (no rate limit) may be +inf.
+      const bool may_be_infinite = c == 9 || c == 11;
+      if (end == cell.c_str() || *end != '\0' || std::isnan(v[c]) ||
+          (!may_be_infinite && std::isinf(v[c]))) {
         throw std::invalid_argument(csv_path + ": line " + std::to_string(number) + ": column " +
-                                    kColumns[c] + " = '" + cell + "' is not a number");
+                                    kColumns[c] + " = '" + cell + "' is not a finite number");
       }
+    }
+    if (std::getline(row, cell, ',')) {
+      throw std::invalid_argument(csv_path + ": line " + std::to_string(number) + ": more than " +
+                                  std::to_string(columns) + " columns");
+    }
+    // Region labels 1-5 (VelocityRegion); checked before the conversion to int.
+    if (!(v[1] >= 1.0 && v[1] <= 5.0 && v[1] == std::floor(v[1]))) {
+      throw std::invalid_argument(csv_path + ": line " + std::to_string(number) +
+                                  ": column region = " + std::to_string(v[1]) +
+                                  " must be an integer in [1, 5]");
     }
     ScheduleEntry e;
     e.speed_mps = v[0];
@@ -162,11 +200,22 @@ GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerPara
     e.max_steering_angle_rad = v[7];
     e.max_steering_rate_radps = v[8];
     e.max_steering_acceleration_radps2 = v[9];
+    e.feedforward_curvature_bound = v[10];
+    e.feedforward_curvature_rate = v[11];
     if (!entries.empty() && !(e.speed_mps > entries.back().speed_mps)) {
       throw std::invalid_argument(csv_path + ": line " + std::to_string(number) +
                                   ": speed_mps must increase");
     }
     vehicle.wheelbase_m = std::hypot(e.fictive_wheelbase_m, e.lead_wheelbase_m);
+    TuningOptions row_options;
+    row_options.base = base;
+    row_options.order = e.lead_wheelbase_m > 0.0 ? 2 : 1;
+    const ControllerParameters p = schedule_entry_parameters(row_options, vehicle.wheelbase_m, e);
+    if (!std::isfinite(e.speed_mps) || e.speed_mps <= 0.0 || !p.is_valid()) {
+      throw std::invalid_argument(
+          csv_path + ": line " + std::to_string(number) + ": " +
+          (p.is_valid() ? "speed_mps must be finite and > 0" : p.validation_error()));
+    }
     vehicle.max_steering_angle_rad =
         std::max(vehicle.max_steering_angle_rad, e.max_steering_angle_rad);
     vehicle.max_steering_rate_radps =

@@ -32,6 +32,10 @@ std::string VehicleLimits::validation_error() const {
     return describe("max_steering_acceleration_radps2", max_steering_acceleration_radps2,
                     "must be > 0 (+inf for no limit)");
   }
+  if (std::isnan(max_lateral_acceleration_mps2) || max_lateral_acceleration_mps2 <= 0.0) {
+    return describe("max_lateral_acceleration_mps2", max_lateral_acceleration_mps2,
+                    "must be > 0 (+inf for no friction limit)");
+  }
   return {};
 }
 

@@ -11,46 +11,9 @@ namespace {
 
 // Resolution of the worst-case search. The grid includes the box edges and corners; pattern
 // search then refines the best samples until the step is below kRefineTolerance of the box.
-constexpr int kRateSamples = 128;
 constexpr int kGridSamples = 16;
 constexpr int kRefinedStarts = 3;
 constexpr double kRefineTolerance = 1e-9;
-
-double gain(double front_angle, double ratio) noexcept {
-  const double c = std::cos(front_angle), s = std::sin(front_angle);
-  return ratio / (c * c + ratio * ratio * s * s);
-}
-
-double gain_slope(double front_angle, double ratio) noexcept {
-  const double c = std::cos(front_angle), s = std::sin(front_angle);
-  const double denominator = c * c + ratio * ratio * s * s;
-  return -ratio * std::sin(2.0 * front_angle) * (ratio * ratio - 1.0) / (denominator * denominator);
-}
-
-//! Maximum of a smooth function on [low, high]: uniform samples, then golden section around the
-//! best one (bracketed by its neighbours).
-template <class F>
-double maximize_1d(F&& f, double low, double high, int samples) {
-  int best = 0;
-  double best_value = -std::numeric_limits<double>::infinity();
-  for (int k = 0; k <= samples; ++k) {
-    const double value = f(low + (high - low) * k / samples);
-    if (value > best_value) best_value = value, best = k;
-  }
-  double a = low + (high - low) * std::max(0, best - 1) / samples;
-  double b = low + (high - low) * std::min(samples, best + 1) / samples;
-  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
-  double f1 = f(x1), f2 = f(x2);
-  for (int iteration = 0; iteration < 50; ++iteration) {
-    if (f1 > f2) {
-      b = x2, x2 = x1, f2 = f1, x1 = b - golden * (b - a), f1 = f(x1);
-    } else {
-      a = x1, x1 = x2, f1 = f2, x2 = a + golden * (b - a), f2 = f(x2);
-    }
-  }
-  return std::max({best_value, f1, f2});
-}
 
 }  // namespace
 
@@ -60,11 +23,12 @@ SteeringDerivatives vehicle_steering_derivatives(const ControllerParameters& par
   const FrontAngleDerivatives d = front_angle_derivatives(delta, parameters.wheelbases_m.data(),
                                                           parameters.order, lead_curvature);
   const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
-  const double g = gain(delta[0], ratio);
+  const double g = vehicle_angle_gain(delta[0], ratio);
   SteeringDerivatives result;
   result.rate_per_meter = g * d.first;
   if (parameters.order >= 2) {
-    result.acceleration_per_meter2 = gain_slope(delta[0], ratio) * d.first * d.first + g * d.second;
+    result.acceleration_per_meter2 =
+        vehicle_angle_gain_slope(delta[0], ratio) * d.first * d.first + g * d.second;
   }
   return result;
 }
@@ -77,16 +41,10 @@ SteeringDerivatives worst_case_steering_derivatives(const ControllerParameters& 
         " is not supported (the static map covers n = 1 and n = 2)");
   }
   const ChainBounds bounds = compute_chain_bounds(parameters);
-  const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
-  const double lambda_1 = parameters.wheelbases_m[0];
-  const double kbar_1 = bounds.curvature[1];
   SteeringDerivatives result;
-  // Rate: delta_1' = kappa_1 / cos(delta_1) - tan(delta_1)/lambda_1 (eq. ddelta_kappaf) does not
-  // depend on kappa_n for n = 2; its extreme over the box takes |kappa_1| = kbar_1, i.e.
-  // delta_2 on the edge. By symmetry only delta_1 >= 0 is needed.
-  result.rate_per_meter = maximize_1d(
-      [&](double a) { return gain(a, ratio) * (kbar_1 / std::cos(a) + std::tan(a) / lambda_1); },
-      0.0, bounds.angle[0], kRateSamples);
+  // Rate: the 1-D supremum of compute_chain_bounds() (its extreme puts delta_2 on the box edge,
+  // |kappa_1| = kbar_1, eq. ddelta_kappaf); one implementation for controller and tuner.
+  result.rate_per_meter = bounds.steering_rate_per_meter;
   if (parameters.order == 1) {
     result.acceleration_per_meter2 = std::numeric_limits<double>::infinity();
     return result;

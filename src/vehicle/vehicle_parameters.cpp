@@ -67,6 +67,10 @@ std::optional<Violation> VehicleParameters::first_violation() const noexcept {
   if (!positive(max_steering_rate_radps)) {
     return bad("max_steering_rate_radps", max_steering_rate_radps, "must be finite and > 0");
   }
+  if (std::isnan(max_steering_acceleration_radps2) || max_steering_acceleration_radps2 <= 0.0) {
+    return bad("max_steering_acceleration_radps2", max_steering_acceleration_radps2,
+               "must be > 0 (+inf: none)");
+  }
   if (!std::isfinite(kinematic_below_mps) || kinematic_below_mps < 0.1) {
     return bad("kinematic_below_mps", kinematic_below_mps,
                "must be >= 0.1 (slip angles are singular at v = 0)");

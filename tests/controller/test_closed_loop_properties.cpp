@@ -161,7 +161,9 @@ TEST(ClosedLoopProperties, DelayCompensationRestoresConvergenceUnderDeadTime) {
 TEST(ClosedLoopProperties, PrintedSurfaceCirclesFromFarWhileGlobalConverges) {
   // paper_notes §4: the printed surface has no zero for |e| > 2 / ((1 - k_rob) kbar).
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 1000.0));
-  ControllerParameters parameters;  // n = 2, kbar_l = 0.2 1/m -> 2/((1-k_rob) kbar) = 14.3 m
+  ControllerParameters parameters;     // n = 2, kbar_l = 0.2 1/m -> 2/((1-k_rob) kbar) = 14.3 m
+  parameters.feedforward_share = 0.0;  // the paper's law: kappa_n = kbar_n sign(sigma)
+  parameters.boundary_layer = 0.0;
   const Pose2 start{{0.0, 40.0}, 0.0};
   KinematicLoopOptions options;
   options.duration_s = 60.0;

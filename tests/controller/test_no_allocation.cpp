@@ -45,6 +45,7 @@ TEST(RealTime, UpdateDoesNotAllocate) {
     parameters.order = order;
     parameters.lead_curvature_bound = 0.05;
     parameters.actuator_delay_s = order % 2 == 1 ? 0.3 : 0.0;  // covers the delay prediction
+    if (order % 2 == 0) parameters.feedforward_curvature_rate = 0.01;  // and the preview
     LeadWheelController controller(parameters, path);
     ControllerOutput output;
     Vec2 position{5.0, 30.0};

@@ -132,7 +132,10 @@ TEST(Sweep, GridPaperVariationsAndParallelRunsAgreeWithSequentialRuns) {
   EXPECT_THROW(parse_sweep_axis("novalues"), ConfigError);
 
   const std::string file = (source_dir() / "scenarios/lane_change_10.yaml").string();
-  const std::vector<std::string> base{"simulation.duration_s=4"};
+  // The paper's variations (Sec. IV-A) vary a fixed lead-wheel controller, not a schedule.
+  const std::vector<std::string> base{
+      "simulation.duration_s=4",
+      "controller={type: lead_wheel, order: 2, lead_wheelbase_m: 0.5, lead_curvature_bound: 0.2}"};
   const Scenario scenario = load_scenario(file, base);
   const auto variations = paper_variations(scenario);
   ASSERT_EQ(variations.size(), 4u);

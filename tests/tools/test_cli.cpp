@@ -7,8 +7,14 @@
 #include <signal.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "tools/cli_process.hpp"
 
@@ -245,6 +251,45 @@ TEST_F(Cli, SummaryWritesCountsAsIntegersAndTheToolVersion) {
   EXPECT_NE(summary.find("\"bound_violations\": 0"), std::string::npos);
   EXPECT_NE(summary.find("\"commit\":"), std::string::npos);
   EXPECT_NE(summary.find("\"version\": \"0."), std::string::npos);
+}
+
+// Issue 8: every committed schedule is what the `smoothsteer tune` command written in its
+// scenario file produces, byte for byte (the command runs from the repository root).
+TEST_F(Cli, CommittedSchedulesAreRegeneratedByTheCommandInTheirScenario) {
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(source_dir() / "scenarios")) {
+    if (entry.path().extension() != ".yaml") continue;
+    std::ifstream file(entry.path());
+    std::vector<std::string> arguments;
+    bool in_command = false;
+    for (std::string line; std::getline(file, line);) {
+      const bool start = line.rfind("#   smoothsteer tune", 0) == 0;
+      if (!start && !(in_command && line.rfind("#     ", 0) == 0)) {
+        if (in_command) break;
+        continue;
+      }
+      in_command = true;
+      std::istringstream words(line.substr(start ? 15 : 1));
+      for (std::string word; words >> word;) arguments.push_back(word);
+    }
+    if (arguments.empty()) continue;
+    SCOPED_TRACE(entry.path().string());
+    const auto out = std::find(arguments.begin(), arguments.end(), "--out");
+    ASSERT_NE(out, arguments.end());
+    const fs::path committed = source_dir() / *(out + 1);
+    *(out + 1) = (directory_ / "regenerated.csv").string();
+    arguments.insert(arguments.begin(), SMOOTHSTEER_CLI);
+    const ProcessResult run = run_process(arguments, source_dir());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::ifstream a(committed, std::ios::binary),
+        b(directory_ / "regenerated.csv", std::ios::binary);
+    const std::string expected{std::istreambuf_iterator<char>(a), {}};
+    const std::string actual{std::istreambuf_iterator<char>(b), {}};
+    EXPECT_FALSE(expected.empty()) << committed;
+    EXPECT_EQ(actual, expected) << committed;
+    ++checked;
+  }
+  EXPECT_GE(checked, 4);
 }
 
 }  // namespace

@@ -16,6 +16,13 @@
 namespace smoothsteer {
 namespace {
 
+//! The paper's route (Certificate::box); the feedforward route has its own tests.
+TuningOptions box_route() {
+  TuningOptions options;
+  options.certificate = Certificate::box;
+  return options;
+}
+
 using namespace smoothsteer::testing;
 
 VehicleLimits random_vehicle(Random& random) {
@@ -41,6 +48,7 @@ TEST(GainSchedule, LimitsHoldAtEveryGridSpeed) {
     Random random(case_seed(k) + 21);
     const VehicleLimits vehicle = random_vehicle(random);
     TuningOptions options;
+    options.certificate = Certificate::box;  // the paper's route
     options.max_longitudinal_acceleration_mps2 = random.uniform(0.0, 3.0);
     SCOPED_TRACE(seed_message(case_seed(k) + 21) + " " + describe(vehicle) +
                  " dv/dt=" + std::to_string(options.max_longitudinal_acceleration_mps2));
@@ -90,8 +98,8 @@ TEST(GainSchedule, RelaxingALimitNeverLowersTheLeadCurvature) {
     SCOPED_TRACE(seed_message(case_seed(k) + 22) + " " + describe(vehicle) + " relaxed " +
                  describe(relaxed));
     const std::vector<double> speeds = speed_grid(1.0, 30.0, 2.0);
-    const GainSchedule a = compute_gain_schedule(vehicle, {}, speeds, shared_map());
-    const GainSchedule b = compute_gain_schedule(relaxed, {}, speeds, shared_map());
+    const GainSchedule a = compute_gain_schedule(vehicle, box_route(), speeds, shared_map());
+    const GainSchedule b = compute_gain_schedule(relaxed, box_route(), speeds, shared_map());
     for (std::size_t i = 0; i < speeds.size(); ++i) {
       EXPECT_GE(b.entries()[i].lead_curvature_bound,
                 a.entries()[i].lead_curvature_bound * (1.0 - 1e-6))
@@ -107,7 +115,7 @@ TEST(GainSchedule, RegionsOfTheExampleVehicle) {
   VehicleLimits vehicle;
   vehicle.max_steering_acceleration_radps2 = 5.0;
   const GainSchedule s =
-      compute_gain_schedule(vehicle, {}, speed_grid(0.05, 30.0, 0.05), shared_map());
+      compute_gain_schedule(vehicle, box_route(), speed_grid(0.05, 30.0, 0.05), shared_map());
   bool seen[6] = {};
   for (std::size_t i = 0; i < s.entries().size(); ++i) {
     const ScheduleEntry& e = s.entries()[i];
@@ -128,6 +136,7 @@ TEST(GainSchedule, RegionsOfTheExampleVehicle) {
 TEST(GainSchedule, FirstOrderUsesAngleAndRateOnly) {
   VehicleLimits vehicle;  // acceleration limit +inf
   TuningOptions options;
+  options.certificate = Certificate::box;  // the paper's route
   options.order = 1;
   const GainSchedule s =
       compute_gain_schedule(vehicle, options, speed_grid(0.1, 30, 0.1), shared_map());
@@ -147,7 +156,7 @@ TEST(GainSchedule, InfeasibleLimitNamesSpeedAndLimit) {
   VehicleLimits vehicle;
   vehicle.max_steering_acceleration_radps2 = 1.0;
   try {
-    compute_gain_schedule(vehicle, {}, speed_grid(1.0, 30.0, 0.5), shared_map());
+    compute_gain_schedule(vehicle, box_route(), speed_grid(1.0, 30.0, 0.5), shared_map());
     FAIL() << "expected InfeasibleLimits";
   } catch (const InfeasibleLimits& error) {
     const std::string text = error.what();
@@ -158,10 +167,12 @@ TEST(GainSchedule, InfeasibleLimitNamesSpeedAndLimit) {
         << text;
     EXPECT_NE(text.find("steering acceleration limit (1 rad/s^2)"), std::string::npos) << text;
     // The previous grid speed is feasible: the message names the FIRST infeasible speed.
-    EXPECT_NO_THROW(compute_gain_schedule(vehicle, {}, {error.speed_mps() - 0.5}, shared_map()));
+    EXPECT_NO_THROW(
+        compute_gain_schedule(vehicle, box_route(), {error.speed_mps() - 0.5}, shared_map()));
   }
   TuningOptions options;
-  options.path_curvature_bound = 0.5;  // k_rob would need kbar_l > 0.53 1/m
+  options.certificate = Certificate::box;  // the paper's route
+  options.path_curvature_bound = 0.5;      // k_rob would need kbar_l > 0.53 1/m
   try {
     compute_gain_schedule(VehicleLimits{}, options, {5.0}, shared_map());
     FAIL() << "expected InfeasibleLimits";
@@ -182,20 +193,21 @@ TEST(GainSchedule, BadInputsAreRejectedWithTheirName) {
   VehicleLimits bad;
   bad.max_steering_rate_radps = -1.0;
   EXPECT_NE(message([&] {
-              compute_gain_schedule(bad, {}, {1.0}, shared_map());
+              compute_gain_schedule(bad, box_route(), {1.0}, shared_map());
             }).find("max_steering_rate_radps = -1"),
             std::string::npos);
   bad = {};
   bad.max_steering_angle_rad = std::nan("");
   EXPECT_NE(message([&] {
-              compute_gain_schedule(bad, {}, {1.0}, shared_map());
+              compute_gain_schedule(bad, box_route(), {1.0}, shared_map());
             }).find("max_steering_angle_rad"),
             std::string::npos);
   EXPECT_NE(message([&] {
-              compute_gain_schedule({}, {}, {2.0, 1.0}, shared_map());
+              compute_gain_schedule({}, box_route(), {2.0, 1.0}, shared_map());
             }).find("speeds_mps[1] = 1"),
             std::string::npos);
   TuningOptions three;
+  three.certificate = Certificate::box;
   three.order = 3;
   EXPECT_NE(
       message([&] { compute_gain_schedule({}, three, {1.0}, shared_map()); }).find("order = 3"),
@@ -208,7 +220,7 @@ TEST(GainSchedule, InterpolationIsContinuousAndConservative) {
   VehicleLimits vehicle;
   vehicle.max_steering_acceleration_radps2 = 5.0;
   const GainSchedule s =
-      compute_gain_schedule(vehicle, {}, speed_grid(1.0, 30.0, 0.5), shared_map());
+      compute_gain_schedule(vehicle, box_route(), speed_grid(1.0, 30.0, 0.5), shared_map());
   ControllerParameters previous = s.parameters_at(0.0);
   for (double v = 0.0; v <= 30.0; v += 0.001) {
     const ControllerParameters p = s.parameters_at(v);

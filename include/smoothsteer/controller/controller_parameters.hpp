@@ -3,6 +3,7 @@
 //! Parameters of the n-smooth lead-wheel controller (paper Sec. II and III). SI units throughout.
 
 #include <array>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -50,11 +51,24 @@ struct ControllerParameters {
   //! psi_max in (0, pi/2]: heading relative to the path with which the lead wheel approaches
   //! from far away. pi/2 gives the Dubins turn-straight-turn.
   double approach_angle_rad = std::numbers::pi / 2.0;
+  //! Share of kbar_n given to the curvature feedforward, in [0, 1) (docs/feedforward.md):
+  //! kbar_ff = feedforward_share * kbar_n. The law is kappa_n = kappa_ff + kappa_sw, with kappa_ff
+  //! the curvature the lead wheel needs to stay on its target curve (exact Frenet form),
+  //! saturated at +-kbar_ff and rate limited, and kappa_sw the switching part with authority
+  //! kbar_sw = kbar_n - kbar_ff. |kappa_n| <= kbar_n, so the paper's invariant sets and angle
+  //! bounds hold unchanged. 0 is the paper's law (no feedforward): the path's curvature is then
+  //! a disturbance that k_rob must cover.
+  double feedforward_share = 0.5;
+  //! L_ff >= 0: largest |d kappa_ff / ds| per metre of rear-axle travel [1/m^2]. Finite values
+  //! make the steering rate and acceleration certificate of steering_certificate.hpp finite;
+  //! +inf lets the feedforward follow its target at once (then only the box bound holds).
+  double feedforward_curvature_rate = std::numeric_limits<double>::infinity();
   //! epsilon >= 0: width of a boundary layer around the switching surface, in the units of the
   //! sliding variable (rad for the global law, m for the paper's). 0 is the paper's
-  //! kappa_n = kbar_n sign(.); epsilon > 0 uses kbar_n sat(./epsilon), which removes the
-  //! discrete-time chattering of kappa_n. |kappa_n| <= kbar_n either way, so every bound holds.
-  double boundary_layer = 0.0;
+  //! kappa_sw = kbar_sw sign(.); epsilon > 0 uses kbar_sw sat(./epsilon), which removes the
+  //! discrete-time chattering of the command's acceleration at the cost of millimetres.
+  //! |kappa_sw| <= kbar_sw either way, so every bound holds.
+  double boundary_layer = 0.01;
   //! Known delay [s] between the command and the steering it produces (dead time, plus the
   //! group delay of the actuator's low-pass if desired); 0 = off. Beyond the paper (its outlook:
   //! actuator compensation): the law acts on the pose predicted for the moment the new command
@@ -62,6 +76,14 @@ struct ControllerParameters {
   //! still in the pipe (a Smith predictor). At most max_actuator_delay_s.
   double actuator_delay_s = 0.0;
   static constexpr double max_actuator_delay_s = 1.0;
+  //! kbar_ff = feedforward_share * kbar_n [1/m].
+  double feedforward_curvature_bound() const noexcept {
+    return feedforward_share * lead_curvature_bound;
+  }
+  //! kbar_sw = kbar_n - kbar_ff [1/m]: authority of the switching part.
+  double switching_curvature_bound() const noexcept {
+    return (1.0 - feedforward_share) * lead_curvature_bound;
+  }
   SlidingSurface surface = SlidingSurface::global;
   CorneringTarget cornering_target = CorneringTarget::rear_axle;
   //! Largest arc-length step [m] of the RK4 integration of the chain, relative to the shortest

@@ -18,6 +18,8 @@
 
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/controller/feedforward.hpp"
+#include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/controller/trailer_chain.hpp"
 #include "smoothsteer/math/pose2.hpp"
@@ -59,6 +61,11 @@ class LeadWheelController final : public SteeringController {
 
   const ControllerParameters& parameters() const noexcept { return parameters_; }
   const ChainBounds& bounds() const noexcept { return bounds_; }
+  //! Certified rate and acceleration of delta_veh under the feedforward split
+  //! (steering_certificate.hpp); the box bound bounds().steering_rate_per_meter holds as well.
+  const SteeringCertificate& certificate() const noexcept { return certificate_; }
+  //! Current kappa_ff [1/m] (rate limited and saturated, docs/feedforward.md).
+  double feedforward_curvature() const noexcept { return feedforward_curvature_; }
   const ChainAngles& chain_angles() const noexcept { return angles_; }
   //! +1 while driving forwards, -1 in reverse.
   double direction() const noexcept { return direction_; }
@@ -70,20 +77,30 @@ class LeadWheelController final : public SteeringController {
   struct LeadWheelState {
     PathProjection projection;
     double relative_heading = 0.0;
-    SwitchingResult law;
+    double feedforward_target = 0.0;  //!< curvature that keeps the lead wheel on its target curve
+    SwitchingResult law;              //!< the switching part kappa_sw
   };
-  LeadWheelState evaluate_lead_wheel(Vec2 rear_position, double rear_travel_heading) noexcept;
+  //! refresh_target: recompute target_ at this projection (once per period, the first sub-step).
+  LeadWheelState evaluate_lead_wheel(Vec2 rear_position, double rear_travel_heading,
+                                     bool refresh_target) noexcept;
+  //! The curve the lead wheel tracks near its closest point (feedforward.hpp).
+  TargetCurve target_curve(const PathProjection& lead) const noexcept;
   //! Sets the parameters and what derives from them (bounds, sum lambda_i^2, sub-step length).
   void apply_parameters(const ControllerParameters& parameters) noexcept;
   //! Heading of the direction of travel: psi, or psi + pi while reversing.
   double travel_heading(double heading) const noexcept;
   void initialise_chain(double vehicle_steering_angle) noexcept;
+  //! Stationary chain whose lead curvature is kappa_ff, and kappa_ff := that curvature.
+  void initialise_chain_on_feedforward(double feedforward_curvature) noexcept;
   double front_angle_from_vehicle(double vehicle_steering_angle) const noexcept;
   double vehicle_steering_angle_of_chain() const noexcept;
 
   ControllerParameters parameters_;
   std::shared_ptr<const Path> path_;
   ChainBounds bounds_;
+  SteeringCertificate certificate_;
+  double feedforward_curvature_ = 0.0;
+  TargetCurve target_;  //!< target curve of the current period
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
   double largest_substep_m_ = 0.0;     //!< max_substep_fraction * min lambda_i [m]

@@ -29,6 +29,7 @@ struct TrackingDiagnostics {
   double lead_heading_error_rad = 0.0;  //!< psi_lead relative to the path at its closest point
   double sliding_variable = 0.0;        //!< sigma [m] (paper surface) or heading gap [rad] (global)
   double lead_curvature = 0.0;          //!< kappa_n applied to the lead wheel [1/m]
+  double feedforward_curvature = 0.0;   //!< kappa_ff, its feedforward part [1/m]
   double path_arc_length_m = 0.0;       //!< s of the rear axle's closest point
   double path_curvature = 0.0;          //!< path curvature at the rear axle's closest point
   double fictive_steering_angle_rad = 0.0;  //!< delta_1 of the fictive chain

@@ -37,10 +37,14 @@ struct ChainBounds {
 //! d delta_veh / d delta_1 for delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1
 //! (paper_notes §3): r / (cos^2 delta_1 + r^2 sin^2 delta_1).
 double vehicle_angle_gain(double front_angle, double ratio) noexcept;
+//! d gain / d delta_1 = -gain^2 sin(2 delta_1) (r^2 - 1) / r.
+double vehicle_angle_gain_slope(double front_angle, double ratio) noexcept;
 
 //! Propagates kbar_n down the chain: kbar_{i-1} = kbar_i / sqrt(1 - kbar_i^2 lambda_i^2).
 //! Requires valid parameters.
 ChainBounds compute_chain_bounds(const ControllerParameters& parameters);
+//! The same without the rate supremum (steering_rate_per_meter stays 0): the invariant sets only.
+ChainBounds compute_invariant_sets(const ControllerParameters& parameters) noexcept;
 
 //! d delta_i / ds for i = 1..n (derivatives with respect to the REAR arc length s).
 void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
@@ -77,5 +81,9 @@ void stationary_chain(double front_angle, const double* wheelbases, int order,
 //! there (LeadWheelController::retune).
 void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
                      double ds, const ChainAngles& angle_bound) noexcept;
+//! The same with a lead curvature that changes linearly from lead_curvature to
+//! lead_curvature_end over the step (the rate-limited feedforward, docs/feedforward.md).
+void integrate_chain(ChainAngles& delta, const double* wheelbases, int order, double lead_curvature,
+                     double lead_curvature_end, double ds, const ChainAngles& angle_bound) noexcept;
 
 }  // namespace smoothsteer

@@ -86,6 +86,14 @@ class Path {
   //! Largest |curvature| along the path [1/m].
   double max_abs_curvature() const noexcept { return max_abs_curvature_; }
 
+  //! Curvature sampled every curvature_sample_spacing_m() from s = 0 to length(), built once
+  //! with the path, for the feedforward's preview (docs/feedforward.md): a look-up, no search.
+  double curvature_sample_spacing_m() const noexcept { return curvature_spacing_; }
+  //! The sample nearest to arc length s (wrapped if closed; 0 on the straight end extensions).
+  double sampled_curvature(double arc_length_m) const noexcept;
+  //! Sample i (wrapped if closed; 0 outside [0, length()] on open paths).
+  double curvature_sample(long index) const noexcept;
+
   //! Position, heading and curvature at arc length s (wrapped if closed, extended if open).
   PathPoint evaluate(double arc_length_m) const noexcept;
 
@@ -145,6 +153,10 @@ class Path {
   double length_ = 0.0;
   double max_abs_curvature_ = 0.0;
   bool closed_ = false;
+  static constexpr double curvature_sample_spacing = 0.5;         //!< [m]
+  static constexpr std::size_t max_curvature_samples = 1u << 22;  //!< 32 MiB at most
+  double curvature_spacing_ = curvature_sample_spacing;
+  std::vector<double> curvature_samples_;
 };
 
 }  // namespace smoothsteer

@@ -13,6 +13,7 @@
 //! Order n = 1 has no lambda_l and no acceleration bound: kbar_1 follows in closed form from C1
 //! and O1. n >= 3 is not supported (docs/tuning.md says how far the generalization goes).
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,7 +24,19 @@
 
 namespace smoothsteer {
 
+//! Which certificate the tuner designs against (docs/tuning.md).
+enum class Certificate {
+  //! The paper's route: worst case over the invariant box; the path's curvature is a matched
+  //! disturbance that k_rob covers; no feedforward.
+  box,
+  //! Curvature feedforward plus switching part (docs/feedforward.md): the feedforward covers the
+  //! path's curvature and curvature rate, the switching part only the residual; the rate and
+  //! acceleration bounds of steering_certificate.hpp.
+  feedforward,
+};
+
 struct TuningOptions {
+  Certificate certificate = Certificate::feedforward;
   int order = 2;  //!< n: 1 or 2
   //! Largest |dv/dt| the schedule must cover [m/s^2]; enters O2 as |dv/dt| R (paper: 0).
   double max_longitudinal_acceleration_mps2 = 0.0;
@@ -33,6 +46,14 @@ struct TuningOptions {
   //! cover (Sec. III item 2, paper_notes §6).
   double matched_disturbance_curvature = 0.0;
   double path_curvature_bound = 0.0;
+  //! Largest |d kappa / ds| of the reference path [1/m^2] (+inf: unknown or with jumps); the
+  //! feedforward's rate limit L_ff covers it with feedforward_rate_margin where the budget allows.
+  double path_curvature_rate_bound = std::numeric_limits<double>::infinity();
+  double feedforward_rate_margin = 1.25;  //!< L_ff = margin * path curvature rate ...
+  double feedforward_rate_share = 0.8;    //!< ... but at most this share of the rate budget
+  //! kbar_sw >= this share of kbar_n even where the path asks for more curvature than the
+  //! friction or angle limit allows (the feedforward then saturates there).
+  double switching_floor_share = 0.1;
   double k_rob_floor = 0.3;     //!< k_rob = max(floor, (kappa_d + kbar_path) / kbar_l)
   double k_rob_ceiling = 0.95;  //!< infeasible when the required k_rob reaches this
   //! Template for every other controller field (surface, cornering target, sub-steps).
@@ -59,6 +80,8 @@ struct ScheduleEntry {
   double lead_wheelbase_m = 0.0;      //!< lambda_l [m] (0 for n = 1)
   double lead_curvature_bound = 0.0;  //!< kbar_l [1/m] (kbar_1 for n = 1)
   double k_rob = 0.0;
+  double feedforward_curvature_bound = 0.0;  //!< kbar_ff [1/m] (0 on the box route)
+  double feedforward_curvature_rate = 0.0;   //!< L_ff [1/m^2]
   //! Exact worst case at this speed (not from the table), for the report and Fig. param_v.
   double max_steering_angle_rad = 0.0;
   double max_steering_rate_radps = 0.0;
@@ -113,6 +136,25 @@ class GainSchedule {
 //! cover the vehicle's steering angle (options().max_steering_angle_rad) for n = 2.
 GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
                                    const std::vector<double>& speeds_mps, const StaticMap& map);
+
+//! The feedforward route (Certificate::feedforward, docs/tuning.md): at each speed the largest
+//! switching authority kbar_sw, with kbar_ff covering the path's curvature within the angle and
+//! friction limits and L_ff its curvature rate, such that steering_certificate.hpp's bounds meet
+//! the rate and acceleration limits. Needs no static map. Same errors as compute_gain_schedule.
+GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
+                                          const TuningOptions& options,
+                                          const std::vector<double>& speeds_mps);
+
+//! Parameters of a schedule entry for the options' order and template (both routes).
+ControllerParameters schedule_entry_parameters(const TuningOptions& options,
+                                               double vehicle_wheelbase_m,
+                                               const ScheduleEntry& entry) noexcept;
+
+//! Entry a + t (b - a) in every tuned parameter (the online blend of parameters_at()).
+ScheduleEntry blend_entries(const ScheduleEntry& a, const ScheduleEntry& b, double t) noexcept;
+
+//! Throws std::invalid_argument unless the speeds are finite, > 0 and strictly increasing.
+void check_speed_grid(const std::vector<double>& speeds_mps);
 
 //! Speeds first:step:last (inclusive up to rounding); throws for non-positive step or first.
 std::vector<double> speed_grid(double first_mps, double last_mps, double step_mps);

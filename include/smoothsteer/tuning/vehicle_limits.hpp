@@ -14,6 +14,9 @@ struct VehicleLimits {
   double max_steering_rate_radps = 0.4;   //!< C2: |d delta_veh/dt| <= this [rad/s]
   //! C3: |d2 delta_veh/dt2| <= this [rad/s^2]; +inf = no limit (required for order n = 1).
   double max_steering_acceleration_radps2 = std::numeric_limits<double>::infinity();
+  //! Friction limit of the lateral acceleration, mu g [m/s^2]; +inf = none. The feedforward
+  //! tuner keeps the rear axle's curvature bound kbar_0 <= this / v^2 at every speed.
+  double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();
 
   //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
   void validate() const;

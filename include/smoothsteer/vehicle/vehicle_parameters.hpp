@@ -36,6 +36,9 @@ struct VehicleParameters {
   TireParameters rear_tire;               //!< lumped rear axle
   double max_steering_angle_rad = 1.066;  //!< |delta| limit of the steering system [rad]
   double max_steering_rate_radps = 0.4;   //!< |d delta/dt| limit of the steering system [rad/s]
+  //! |d2 delta/dt2| limit of the steering system [rad/s^2]; +inf = none given. Not enforced by
+  //! the simulated actuator (a low-pass): it is what the tuner certifies and the metrics count.
+  double max_steering_acceleration_radps2 = std::numeric_limits<double>::infinity();
   //! Below this speed the kinetic model is purely kinematic [m/s] (no slip angles at v -> 0).
   double kinematic_below_mps = 1.0;
   //! Above this speed the kinetic model is purely kinetic [m/s]; linear blend in between.

@@ -1,0 +1,205 @@
+// The feedforward route of the tuner (docs/tuning.md, "Feedforward route"): at each speed the
+// largest switching authority kbar_sw such that the certificate of steering_certificate.hpp meets
+// the vehicle's rate and acceleration limits, with the feedforward covering the path.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "smoothsteer/controller/steering_certificate.hpp"
+#include "smoothsteer/tuning/gain_schedule.hpp"
+#include "smoothsteer/tuning/invariant_bounds.hpp"
+
+namespace smoothsteer {
+namespace {
+
+constexpr int kLeadWheelbaseNodes = 48;  // lambda_l / lambda_veh in (0, 0.98] (O4)
+constexpr int kBisections = 50;
+constexpr double kCertificateSlack = 1e-9;
+
+struct SpeedProblem {
+  const VehicleLimits& vehicle;
+  const TuningOptions& options;
+  double speed = 0.0;
+  double lead_wheelbase = 0.0;  //!< lambda_l (0 for n = 1)
+
+  ScheduleEntry entry(double feedforward_bound, double feedforward_rate,
+                      double switching_bound) const {
+    ScheduleEntry e;
+    e.speed_mps = speed;
+    e.lead_wheelbase_m = options.order == 2 ? lead_wheelbase : 0.0;
+    e.lead_curvature_bound = feedforward_bound + switching_bound;
+    e.feedforward_curvature_bound = feedforward_bound;
+    e.feedforward_curvature_rate = feedforward_rate;
+    e.k_rob = std::max(options.k_rob_floor, options.matched_disturbance_curvature /
+                                                switching_bound * (1.0 + kCertificateSlack));
+    return e;
+  }
+  //! Fills the certified maxima; false if they break a limit.
+  bool certify(ScheduleEntry& e) const {
+    const ControllerParameters p = schedule_entry_parameters(options, vehicle.wheelbase_m, e);
+    if (!p.is_valid()) return false;
+    const SteeringCertificate c = feedforward_certificate(p);
+    e.fictive_wheelbase_m = p.wheelbases_m[0];
+    e.max_steering_angle_rad = c.steering_angle_rad;
+    e.max_steering_rate_radps = c.rate_radps(speed);
+    e.max_steering_acceleration_radps2 =
+        options.order >= 2
+            ? c.acceleration_radps2(speed, options.max_longitudinal_acceleration_mps2)
+            : std::numeric_limits<double>::infinity();
+    // No slack: the certified maxima never exceed the limits, not even by rounding.
+    return e.max_steering_angle_rad <= vehicle.max_steering_angle_rad &&
+           e.max_steering_rate_radps <= vehicle.max_steering_rate_radps &&
+           (std::isinf(vehicle.max_steering_acceleration_radps2) ||
+            e.max_steering_acceleration_radps2 <= vehicle.max_steering_acceleration_radps2);
+  }
+};
+
+//! Largest kbar_n the angle limit (with the cornering constraint sum lambda_i^2 = lambda_veh^2,
+//! eq. kappalmax corrected) and the friction limit (kbar_0 <= a_lat / v^2) allow.
+double largest_lead_curvature(const VehicleLimits& vehicle, double speed) {
+  const double l = vehicle.wheelbase_m;
+  double bound = std::sin(vehicle.max_steering_angle_rad) / l;
+  if (std::isfinite(vehicle.max_lateral_acceleration_mps2)) {
+    const double rear = vehicle.max_lateral_acceleration_mps2 / (speed * speed);
+    bound = std::min(bound, stationary_lead_curvature(rear, l * l));
+  }
+  return bound * (1.0 - 1e-9);
+}
+
+//! Largest x in [0, high] with ok(x), for ok monotone (true below a threshold).
+template <class Ok>
+double largest(double high, Ok&& ok) {
+  if (ok(high)) return high;
+  double low = 0.0;
+  for (int i = 0; i < kBisections; ++i) {
+    const double mid = 0.5 * (low + high);
+    (ok(mid) ? low : high) = mid;
+  }
+  return low;
+}
+
+//! The best entry for one lead wheelbase, or an entry with lead_curvature_bound 0 if none.
+ScheduleEntry solve_node(const SpeedProblem& problem) {
+  const TuningOptions& o = problem.options;
+  const double total = largest_lead_curvature(problem.vehicle, problem.speed);
+  const double feedforward_bound =
+      std::min(o.path_curvature_bound, total * (1.0 - o.switching_floor_share));
+  const double tiny = total * 1e-6;
+  // The rate budget of the feedforward alone (kbar_sw -> 0), then its share of it.
+  double feedforward_rate = 0.0;
+  if (feedforward_bound > 0.0) {
+    const double budget = largest(1e3, [&](double rate) {
+      ScheduleEntry e = problem.entry(feedforward_bound, rate, tiny);
+      return problem.certify(e);
+    });
+    feedforward_rate = std::min(o.feedforward_rate_margin * o.path_curvature_rate_bound,
+                                o.feedforward_rate_share * budget);
+  }
+  const double switching = largest(total - feedforward_bound, [&](double bound) {
+    if (bound <= 0.0) return true;
+    ScheduleEntry e = problem.entry(feedforward_bound, feedforward_rate, bound);
+    return problem.certify(e);
+  });
+  ScheduleEntry best =
+      problem.entry(feedforward_bound, feedforward_rate, std::max(switching, tiny));
+  if (!problem.certify(best) || switching <= tiny) best.lead_curvature_bound = 0.0;
+  // Region label: which limit caps kbar_sw (angle/friction: region 1; rate; acceleration).
+  if (best.lead_curvature_bound > 0.0) {
+    const double slack = 1.0 - 1e-6;
+    if (switching >= (total - feedforward_bound) * slack) {
+      best.region = VelocityRegion::region1;
+    } else if (best.max_steering_rate_radps >= problem.vehicle.max_steering_rate_radps * slack) {
+      best.region = VelocityRegion::rate_only;
+    } else {
+      best.region = VelocityRegion::region4;
+    }
+  }
+  return best;
+}
+
+[[noreturn]] void throw_infeasible(const SpeedProblem& problem, const ScheduleEntry& best) {
+  const VehicleLimits& l = problem.vehicle;
+  // Which limit binds: retry without it.
+  std::string binding = "steering rate and acceleration";
+  auto feasible_without = [&](bool rate, bool acceleration) {
+    VehicleLimits relaxed = l;
+    if (rate) relaxed.max_steering_rate_radps = 1e9;
+    if (acceleration) relaxed.max_steering_acceleration_radps2 = 1e18;
+    const SpeedProblem q{relaxed, problem.options, problem.speed, problem.lead_wheelbase};
+    const ScheduleEntry e = solve_node(q);
+    return e.lead_curvature_bound - e.feedforward_curvature_bound >=
+           problem.options.min_lead_curvature_bound;
+  };
+  if (feasible_without(true, false))
+    binding = "steering rate";
+  else if (feasible_without(false, true))
+    binding = "steering acceleration";
+  std::ostringstream text;
+  text.precision(6);
+  text << "infeasible limits at v = " << problem.speed << " m/s: the " << binding << " limit ("
+       << l.max_steering_rate_radps << " rad/s, " << l.max_steering_acceleration_radps2
+       << " rad/s^2) binds: the largest certified switching authority kbar_sw is "
+       << best.lead_curvature_bound - best.feedforward_curvature_bound
+       << " 1/m < min_lead_curvature_bound = " << problem.options.min_lead_curvature_bound
+       << " 1/m (feedforward kbar_ff = " << best.feedforward_curvature_bound
+       << " 1/m, L_ff = " << best.feedforward_curvature_rate
+       << " 1/m^2). Relax that limit, lower the top speed, or give the path's curvature rate.";
+  throw InfeasibleLimits(text.str(), problem.speed, binding);
+}
+
+}  // namespace
+
+GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
+                                          const TuningOptions& options,
+                                          const std::vector<double>& speeds_mps) {
+  vehicle.validate();
+  options.validate();
+  check_speed_grid(speeds_mps);
+  if (options.order == 1 && std::isfinite(vehicle.max_steering_acceleration_radps2)) {
+    throw std::invalid_argument(
+        "order 1 cannot bound the steering acceleration (kappa_f switches, eq. ext1b): set "
+        "max_steering_acceleration_radps2 to inf or use order 2");
+  }
+  std::vector<ScheduleEntry> entries;
+  entries.reserve(speeds_mps.size());
+  for (const double v : speeds_mps) {
+    ScheduleEntry best;
+    const int nodes = options.order == 2 ? kLeadWheelbaseNodes : 1;
+    for (int i = 1; i <= nodes; ++i) {
+      const double lead = vehicle.wheelbase_m * 0.98 * i / nodes;
+      const ScheduleEntry e = solve_node({vehicle, options, v, lead});
+      // O3: the largest switching authority; O4: ties keep the shorter lead wheelbase.
+      if (e.lead_curvature_bound > best.lead_curvature_bound * (1.0 + 1e-9)) best = e;
+    }
+    const double switching = best.lead_curvature_bound - best.feedforward_curvature_bound;
+    if (best.lead_curvature_bound <= 0.0 || switching < options.min_lead_curvature_bound ||
+        best.k_rob >= options.k_rob_ceiling) {
+      throw_infeasible({vehicle, options, v, best.lead_wheelbase_m}, best);
+    }
+    entries.push_back(best);
+  }
+  // Certify the online blends as the box route does: entries k and k+1 mixed must hold at v_k;
+  // otherwise shrink entry k's switching authority (it stays valid at v_k).
+  for (std::size_t k = entries.size(); k-- > 0;) {
+    const std::size_t next = std::min(k + 1, entries.size() - 1);
+    const SpeedProblem problem{vehicle, options, entries[k].speed_mps, entries[k].lead_wheelbase_m};
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      bool ok = true;
+      for (const double t : {0.25, 0.5, 0.75}) {
+        ScheduleEntry mix = blend_entries(entries[k], entries[next], t);
+        ok = ok && problem.certify(mix);
+      }
+      if (ok) break;
+      ScheduleEntry& e = entries[k];
+      const double switching = (e.lead_curvature_bound - e.feedforward_curvature_bound) * 0.99;
+      const VelocityRegion region = e.region;
+      e = problem.entry(e.feedforward_curvature_bound, e.feedforward_curvature_rate, switching);
+      e.region = region;
+      problem.certify(e);
+    }
+  }
+  return GainSchedule(vehicle, options, std::move(entries));
+}
+
+}  // namespace smoothsteer

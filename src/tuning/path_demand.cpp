@@ -1,0 +1,48 @@
+#include "smoothsteer/tuning/path_demand.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace smoothsteer {
+
+namespace {
+
+//! Largest |f(s)| and |f'(s)| of a curvature profile sampled every spacing_m over [0, L].
+PathDemand sampled_demand(const Path& path, double spacing_m,
+                          const std::function<double(double)>& curvature_at) {
+  PathDemand demand;
+  const auto samples = static_cast<long>(std::ceil(path.length() / spacing_m));
+  double previous = curvature_at(0.0);
+  demand.max_curvature = std::abs(previous);
+  for (long k = 1; k <= samples; ++k) {
+    const double s = std::min(path.length(), static_cast<double>(k) * spacing_m);
+    const double curvature = curvature_at(s);
+    demand.max_curvature = std::max(demand.max_curvature, std::abs(curvature));
+    demand.max_curvature_rate =
+        std::max(demand.max_curvature_rate, std::abs(curvature - previous) / spacing_m);
+    previous = curvature;
+  }
+  return demand;
+}
+
+void check_spacing(double spacing_m) {
+  if (!std::isfinite(spacing_m) || spacing_m <= 0.0) {
+    throw std::invalid_argument("path_demand: spacing_m = " + std::to_string(spacing_m) +
+                                " must be finite and > 0");
+  }
+}
+
+}  // namespace
+
+PathDemand path_demand(const Path& path, double spacing_m) {
+  check_spacing(spacing_m);
+  PathDemand demand =
+      sampled_demand(path, spacing_m, [&](double s) { return path.evaluate(s).curvature; });
+  demand.max_curvature = std::max(demand.max_curvature, path.max_abs_curvature());
+  return demand;
+}
+
+}  // namespace smoothsteer

@@ -1,0 +1,156 @@
+// The feedforward law and its certificate (docs/feedforward.md): on random C2 paths, random
+// speeds (also accelerating and braking), far starts with any heading, n = 1 and n = 2, the HELD
+// command, differenced at the control period, never exceeds steering_certificate.hpp's rate and
+// acceleration bounds; and the law converges from far away.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/steering_certificate.hpp"
+#include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/sim/kinematic_closed_loop.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"
+#include "support/random_setup.hpp"
+
+namespace smoothsteer {
+namespace {
+
+using namespace smoothsteer::testing;
+
+//! Random feedforward parameters of order n: share, finite rate, boundary layer and target.
+ControllerParameters random_feedforward_parameters(Random& random, int order) {
+  ControllerParameters p = random_parameters(random, order, random.uniform(0.15, 0.6));
+  p.feedforward_share = random.uniform(0.0, 0.9);
+  p.feedforward_curvature_rate = random.uniform(0.001, 0.05);
+  p.boundary_layer = random.coin() ? 0.0 : random.uniform(0.005, 0.05);
+  p.cornering_target = random.coin() ? CorneringTarget::rear_axle : CorneringTarget::lead_wheel;
+  return p;
+}
+
+std::string describe_case(const ControllerParameters& p, const char* path, const Pose2& start) {
+  std::ostringstream text;
+  text << describe(p) << " share=" << p.feedforward_share
+       << " L_ff=" << p.feedforward_curvature_rate << " eps=" << p.boundary_layer
+       << " path=" << path << " start=(" << start.position.x << "," << start.position.y << ","
+       << start.heading_rad << ")";
+  return text.str();
+}
+
+TEST(FeedforwardCertificate, HeldCommandStaysWithinTheCertificate) {
+  double tightest_rate = 0.0, tightest_acceleration = 0.0;
+  const int cases = property_cases(40);
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = case_seed(k) + 101;
+    Random random(seed);
+    const int order = random.coin() ? 2 : 1;
+    const ControllerParameters p = random_feedforward_parameters(random, order);
+    const auto kind = static_cast<PathKind>(random.integer(0, 2));
+    const auto path = random_path(random, kind, random.uniform(0.3, 1.2) * p.lead_curvature_bound);
+    const Pose2 start{{random.uniform(-60.0, 60.0), random.uniform(-60.0, 60.0)},
+                      random.uniform(-pi, pi)};
+    SCOPED_TRACE(seed_message(seed) + " " + describe_case(p, to_string(kind), start));
+    LeadWheelController controller(p, path);
+    const SteeringCertificate& c = controller.certificate();
+    ASSERT_TRUE(std::isfinite(c.rate_per_meter));
+    const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+    const double dt = random.uniform(0.01, 0.05);
+    const double acceleration = random.uniform(0.0, 2.0);
+    double speed = random.uniform(1.0, 20.0), direction = random.coin() ? 1.0 : -1.0;
+    Pose2 pose = start;
+    double previous[2] = {0.0, 0.0}, previous_speed = speed;
+    for (int step = 0; step < static_cast<int>(60.0 / dt); ++step) {
+      const double a = direction * acceleration;
+      ControllerOutput out;
+      ASSERT_EQ(controller.update({pose.position, pose.heading_rad, speed, a, dt}, out),
+                Status::ok);
+      const double command = out.steering_angle_rad;
+      ASSERT_TRUE(std::isfinite(command));
+      ASSERT_LE(std::abs(command), c.steering_angle_rad * (1.0 + 1e-12));
+      if (step >= 1) {
+        // Mean-value theorem over the distance |v_k| dt the chain moved (steering_certificate).
+        const double rate = std::abs(command - previous[0]) / dt;
+        const double rate_bound = std::abs(speed) * c.rate_per_meter;
+        ASSERT_LE(rate, rate_bound * (1.0 + 1e-6) + 1e-9) << "step " << step;
+        tightest_rate = std::max(tightest_rate, rate / rate_bound);
+      }
+      if (step >= 2 && order >= 2) {
+        const double second = std::abs(command - 2.0 * previous[0] + previous[1]) / (dt * dt);
+        const double bound = std::abs(speed - previous_speed) / dt * c.rate_per_meter +
+                             std::abs(previous_speed) * 0.5 *
+                                 (std::abs(speed) + std::abs(previous_speed)) *
+                                 c.acceleration_per_meter2;
+        ASSERT_LE(second, bound * (1.0 + 1e-6) + 1e-9) << "step " << step;
+        tightest_acceleration = std::max(tightest_acceleration, second / bound);
+      }
+      previous[1] = previous[0];
+      previous[0] = command;
+      pose = plant.step(pose, command, speed, dt);
+      previous_speed = speed;
+      speed += a * dt;
+      if (speed > 25.0 || speed < 1.0) {
+        speed = std::clamp(speed, 1.0, 25.0);
+        direction = -direction;
+      }
+    }
+  }
+  // Tightness (realised / certified) over all cases; printed for docs/tuning.md.
+  std::cout << "held-command tightness: rate " << tightest_rate << ", acceleration "
+            << tightest_acceleration << "\n";
+}
+
+TEST(FeedforwardCertificate, SwitchingShareAloneGivesTheBoxBound) {
+  // With kbar_ff = 0 and L_ff = 0 the certificate is 2 kbar_n / lambda_1 stretched by the output
+  // slope: never below the exact box supremum of compute_chain_bounds, and close to it.
+  const int cases = property_cases(40);
+  for (int k = 0; k < cases; ++k) {
+    Random random(case_seed(k) + 102);
+    ControllerParameters p = random_parameters(random, random.integer(1, 4), 0.5);
+    p.feedforward_share = 0.0;
+    p.feedforward_curvature_rate = 0.0;
+    SCOPED_TRACE(seed_message(case_seed(k) + 102) + " " + describe(p));
+    const double certified = feedforward_certificate(p).rate_per_meter;
+    const double box = compute_chain_bounds(p).steering_rate_per_meter;
+    EXPECT_GE(certified, box * (1.0 - 1e-9));
+    if (p.order == 1) {
+      EXPECT_LE(certified, box * 1.5);
+    }
+  }
+}
+
+TEST(FeedforwardCertificate, ConvergesFromFarStartsOnCurvedPaths) {
+  const int cases = property_cases(40);
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = case_seed(k) + 103;
+    Random random(seed);
+    ControllerParameters p = random_feedforward_parameters(random, random.integer(1, 2));
+    p.feedforward_share = random.uniform(0.4, 0.8);
+    p.boundary_layer = 0.01;
+    p.cornering_target = CorneringTarget::rear_axle;  // the rear axle itself converges
+    const auto kind = random.coin() ? PathKind::circle : PathKind::line;
+    const auto path = random_path(random, kind, 0.9 * p.feedforward_curvature_bound());
+    const Pose2 start{{random.uniform(-80.0, 80.0), random.uniform(-80.0, 80.0)},
+                      random.uniform(-pi, pi)};
+    SCOPED_TRACE(seed_message(seed) + " " + describe_case(p, to_string(kind), start));
+    LeadWheelController controller(p, path);
+    KinematicLoopOptions options;
+    options.wheelbase_m = p.vehicle_wheelbase_m;
+    options.speed_mps = random.uniform(2.0, 10.0);
+    options.period_s = 0.02;
+    options.duration_s = 4000.0 / options.speed_mps;
+    const KinematicLoopResult r = run_kinematic_closed_loop(controller, start, options);
+    ASSERT_EQ(r.status, Status::ok);
+    double tail = 0.0;
+    for (std::size_t i = r.trace.size() - static_cast<std::size_t>(5.0 / options.period_s);
+         i < r.trace.size(); ++i) {
+      tail = std::max(tail, std::abs(r.trace[i].output.diagnostics.lateral_error_m));
+    }
+    EXPECT_LT(tail, 0.02);
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer
