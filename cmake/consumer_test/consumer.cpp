@@ -1,7 +1,8 @@
-// Uses the installed headers and libraries: one closed loop onto a circle must converge, and
-// the tuning module's steering-angle bound must invert its curvature bound.
+// Uses the installed headers and libraries the way the README's ten lines do: certified
+// parameters for a car from the tuning module, then a closed loop onto a circle that must
+// converge with the steering rate within the car's limit.
 #include <smoothsteer/smoothsteer.hpp>
-#include <smoothsteer/tuning/invariant_bounds.hpp>
+#include <smoothsteer/tuning/gain_schedule.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -9,20 +10,27 @@
 
 int main() {
   using namespace smoothsteer;
-  auto path = std::make_shared<const Path>(Path::circle({0.0, 0.0}, 30.0));
-  LeadWheelController controller(ControllerParameters{}, path);
+  const VehicleLimits car{.wheelbase_m = 2.9,
+                          .max_steering_angle_rad = 0.6,
+                          .max_steering_rate_radps = 0.5,
+                          .max_steering_acceleration_radps2 = 5.0};
+  // A circle: curvature 1/40, curvature rate 0 (the feedforward still ramps up within 10 m).
+  const TuningOptions route{.path_curvature_bound = 1.0 / 40.0, .path_curvature_rate_bound = 0.0};
+  const ControllerParameters parameters = parameters_for_vehicle(car, 10.0, route);
+  auto path = std::make_shared<const Path>(Path::circle({0.0, 0.0}, 40.0));
+  LeadWheelController controller(parameters, path);
   KinematicLoopOptions options;
+  options.wheelbase_m = car.wheelbase_m;
+  options.speed_mps = 10.0;
   options.duration_s = 60.0;
   const KinematicLoopResult result =
-      run_kinematic_closed_loop(controller, {{0.0, 0.0}, 0.0}, options);
-  ControllerParameters parameters;
-  const double curvature = lead_curvature_bound_for_steering_angle(parameters, 0.4);
-  parameters.lead_curvature_bound = curvature;
-  const bool tuning_ok = std::abs(steering_angle_bound(parameters) - 0.4) < 1e-6;
-  std::printf("consumer: tuning kbar_n = %.5f 1/m for |delta| <= 0.4 rad -> %s\n", curvature,
-              tuning_ok ? "ok" : "FAILED");
+      run_kinematic_closed_loop(controller, {{0.0, -41.0}, 0.0}, options);
+  const bool within = result.max_abs_steering_difference_rate_radps <= car.max_steering_rate_radps;
+  std::printf("consumer: tuned kbar_n = %.5f 1/m, held rate max %.3f rad/s (limit %.1f) -> %s\n",
+              parameters.lead_curvature_bound, result.max_abs_steering_difference_rate_radps,
+              car.max_steering_rate_radps, within ? "ok" : "FAILED");
   const bool converged =
-      tuning_ok && result.status == Status::ok && std::abs(result.final_lateral_error_m) < 0.01;
+      within && result.status == Status::ok && std::abs(result.final_lateral_error_m) < 0.01;
   std::printf("consumer: final |e| = %.5f m -> %s\n", std::abs(result.final_lateral_error_m),
               converged ? "ok" : "FAILED");
   return converged ? 0 : 1;

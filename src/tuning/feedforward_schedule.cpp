@@ -93,7 +93,8 @@ ScheduleEntry solve_node(const SpeedProblem& problem) {
       ScheduleEntry e = problem.entry(feedforward_bound, rate, tiny);
       return problem.certify(e);
     });
-    feedforward_rate = std::min(o.feedforward_rate_margin * o.path_curvature_rate_bound,
+    feedforward_rate = std::min(std::max(o.feedforward_rate_margin * o.path_curvature_rate_bound,
+                                         feedforward_bound / o.feedforward_ramp_length_m),
                                 o.feedforward_rate_share * budget);
   }
   const double switching = largest(total - feedforward_bound, [&](double bound) {
@@ -200,6 +201,14 @@ GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
     }
   }
   return GainSchedule(vehicle, options, std::move(entries));
+}
+
+ControllerParameters parameters_for_vehicle(const VehicleLimits& vehicle, double speed_mps,
+                                            const TuningOptions& options) {
+  TuningOptions feedforward = options;
+  feedforward.certificate = Certificate::feedforward;
+  const GainSchedule schedule = compute_feedforward_schedule(vehicle, feedforward, {speed_mps});
+  return schedule_entry_parameters(feedforward, vehicle.wheelbase_m, schedule.entries().front());
 }
 
 }  // namespace smoothsteer

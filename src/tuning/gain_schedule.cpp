@@ -267,6 +267,9 @@ void TuningOptions::validate() const {
   } else if (!(feedforward_rate_share > 0.0 && feedforward_rate_share < 1.0)) {
     text << "TuningOptions: feedforward_rate_share = " << feedforward_rate_share
          << " must be in (0, 1)";
+  } else if (!(feedforward_ramp_length_m > 0.0) || !std::isfinite(feedforward_ramp_length_m)) {
+    text << "TuningOptions: feedforward_ramp_length_m = " << feedforward_ramp_length_m
+         << " must be finite and > 0";
   } else if (!(switching_floor_share > 0.0 && switching_floor_share < 1.0)) {
     text << "TuningOptions: switching_floor_share = " << switching_floor_share
          << " must be in (0, 1)";

@@ -49,17 +49,19 @@ LoopCase random_case(std::uint64_t seed, double speed_sign) {
   return c;
 }
 
-//! Distance budget: far start + a few turning circles + settling of the chain lags.
+//! Distance budget: far start + a few turning circles of the switching part (radius 1 / kbar_sw,
+//! docs/feedforward.md) + settling of the chain lags.
 double duration_for(const LoopCase& c) {
-  const double distance = 300.0 + 20.0 / c.parameters.lead_curvature_bound;
+  const double distance = 300.0 + 20.0 / c.parameters.switching_curvature_bound();
   return distance / std::abs(c.speed);
 }
 
 void check_loop(const LoopCase& c, double curvature_disturbance_fraction = 0.0) {
   SCOPED_TRACE(c.text);
   LeadWheelController controller(c.parameters, c.path);
+  // The switching part covers |kappa_d| <= k_rob kbar_sw (docs/feedforward.md, section 4).
   controller.set_matched_disturbance(curvature_disturbance_fraction * c.parameters.k_rob *
-                                     c.parameters.lead_curvature_bound);
+                                     c.parameters.switching_curvature_bound());
   KinematicLoopOptions options;
   options.wheelbase_m = c.parameters.vehicle_wheelbase_m;
   options.speed_mps = c.speed;

@@ -123,5 +123,22 @@ TEST(FeedforwardSchedule, ScheduleCsvRoundTripKeepsTheFeedforward) {
   EXPECT_NEAR(p.feedforward_curvature_bound(), 0.02, 1e-12);
 }
 
+TEST(FeedforwardSchedule, ParametersForYourCarHoldAtEveryLowerSpeed) {
+  VehicleLimits car;
+  car.wheelbase_m = 2.9;
+  car.max_steering_angle_rad = 0.6;
+  car.max_steering_rate_radps = 0.5;
+  car.max_steering_acceleration_radps2 = 5.0;
+  TuningOptions path;
+  path.path_curvature_bound = 1.0 / 40.0;
+  path.path_curvature_rate_bound = 0.005;
+  const ControllerParameters p = parameters_for_vehicle(car, 15.0, path);
+  EXPECT_DOUBLE_EQ(p.vehicle_wheelbase_m, 2.9);
+  EXPECT_NEAR(p.feedforward_curvature_bound(), 1.0 / 40.0, 1e-12);
+  for (const double v : {0.5, 5.0, 10.0, 15.0}) expect_certified(car, p, v, 0.0);
+  EXPECT_THROW(parameters_for_vehicle(car, 80.0, path), InfeasibleLimits);
+  EXPECT_THROW(parameters_for_vehicle(car, -1.0, path), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace smoothsteer

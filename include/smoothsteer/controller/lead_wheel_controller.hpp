@@ -52,7 +52,8 @@ class LeadWheelController final : public SteeringController {
 
   //! Evaluation hook: a matched disturbance kappa_d added to the lead-wheel curvature, i.e. the
   //! extended system receives kappa_n + kappa_d (paper Sec. III item 2: d psi_l / ds_l =
-  //! kappa_l + kappa_d). The law stays convergent for |kappa_d| < k_rob kbar_n.
+  //! kappa_l + kappa_d). The law stays convergent for |kappa_d| < k_rob kbar_sw, the switching
+  //! part's authority (docs/feedforward.md, section 4).
   bool set_matched_disturbance(double lead_curvature_disturbance) noexcept override {
     matched_disturbance_ =
         std::isfinite(lead_curvature_disturbance) ? lead_curvature_disturbance : 0.0;

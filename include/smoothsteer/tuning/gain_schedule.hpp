@@ -51,6 +51,9 @@ struct TuningOptions {
   double path_curvature_rate_bound = std::numeric_limits<double>::infinity();
   double feedforward_rate_margin = 1.25;  //!< L_ff = margin * path curvature rate ...
   double feedforward_rate_share = 0.8;    //!< ... but at most this share of the rate budget
+  //! ... and at least kbar_path / this [m]: the feedforward can build up the path's curvature
+  //! within this distance even on a path of constant curvature (a circle has K' = 0).
+  double feedforward_ramp_length_m = 10.0;
   //! kbar_sw >= this share of kbar_n even where the path asks for more curvature than the
   //! friction or angle limit allows (the feedforward then saturates there).
   double switching_floor_share = 0.1;
@@ -144,6 +147,15 @@ GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOpt
 GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
                                           const TuningOptions& options,
                                           const std::vector<double>& speeds_mps);
+
+//! Certified parameters for a car (docs/tuning.md, "Parameters for your car"): the feedforward
+//! route's entry for the top speed `speed_mps`. Valid at every lower speed too (the certified
+//! maxima grow with v), so one fixed parameter set covers 0..speed_mps; a ScheduledController
+//! gives more authority at low speed. The path enters through options.path_curvature_bound and
+//! path_curvature_rate_bound (0 and +inf by default: a straight path). Throws
+//! std::invalid_argument for invalid inputs and InfeasibleLimits naming the binding limit.
+ControllerParameters parameters_for_vehicle(const VehicleLimits& vehicle, double speed_mps,
+                                            const TuningOptions& options = {});
 
 //! Parameters of a schedule entry for the options' order and template (both routes).
 ControllerParameters schedule_entry_parameters(const TuningOptions& options,
