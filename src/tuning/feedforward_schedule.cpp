@@ -138,9 +138,11 @@ ScheduleEntry solve_node(const SpeedProblem& problem) {
     binding = "steering acceleration";
   std::ostringstream text;
   text.precision(6);
-  text << "infeasible limits at v = " << problem.speed << " m/s: the " << binding << " limit ("
-       << l.max_steering_rate_radps << " rad/s, " << l.max_steering_acceleration_radps2
-       << " rad/s^2) binds: the largest certified switching authority kbar_sw is "
+  text << "infeasible limits at v = " << problem.speed << " m/s: the " << binding << " limit (";
+  if (binding != "steering acceleration") text << l.max_steering_rate_radps << " rad/s";
+  if (binding == "steering rate and acceleration") text << ", ";
+  if (binding != "steering rate") text << l.max_steering_acceleration_radps2 << " rad/s^2";
+  text << ") binds: the largest certified switching authority kbar_sw is "
        << best.lead_curvature_bound - best.feedforward_curvature_bound
        << " 1/m < min_lead_curvature_bound = " << problem.options.min_lead_curvature_bound
        << " 1/m (feedforward kbar_ff = " << best.feedforward_curvature_bound
@@ -154,14 +156,7 @@ ScheduleEntry solve_node(const SpeedProblem& problem) {
 GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
                                           const TuningOptions& options,
                                           const std::vector<double>& speeds_mps) {
-  vehicle.validate();
-  options.validate();
-  check_speed_grid(speeds_mps);
-  if (options.order == 1 && std::isfinite(vehicle.max_steering_acceleration_radps2)) {
-    throw std::invalid_argument(
-        "order 1 cannot bound the steering acceleration (kappa_f switches, eq. ext1b): set "
-        "max_steering_acceleration_radps2 to inf or use order 2");
-  }
+  check_schedule_inputs(vehicle, options, speeds_mps);
   std::vector<ScheduleEntry> entries;
   entries.reserve(speeds_mps.size());
   for (const double v : speeds_mps) {

@@ -333,6 +333,18 @@ void check_speed_grid(const std::vector<double>& speeds_mps) {
   }
 }
 
+void check_schedule_inputs(const VehicleLimits& vehicle, const TuningOptions& options,
+                           const std::vector<double>& speeds_mps) {
+  vehicle.validate();
+  options.validate();
+  check_speed_grid(speeds_mps);
+  if (options.order == 1 && std::isfinite(vehicle.max_steering_acceleration_radps2)) {
+    throw std::invalid_argument(
+        "order 1 cannot bound the steering acceleration (kappa_f switches, eq. ext1b): set "
+        "max_steering_acceleration_radps2 to inf or use order 2");
+  }
+}
+
 ControllerParameters schedule_entry_parameters(const TuningOptions& options,
                                                double vehicle_wheelbase_m,
                                                const ScheduleEntry& entry) noexcept {
@@ -348,14 +360,7 @@ GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOpt
   if (options.certificate == Certificate::feedforward) {
     return compute_feedforward_schedule(vehicle, options, speeds_mps);
   }
-  vehicle.validate();
-  options.validate();
-  check_speed_grid(speeds_mps);
-  if (options.order == 1 && std::isfinite(vehicle.max_steering_acceleration_radps2)) {
-    throw std::invalid_argument(
-        "order 1 cannot bound the steering acceleration (kappa_f switches, eq. ext1b): set "
-        "max_steering_acceleration_radps2 to inf or use order 2");
-  }
+  check_schedule_inputs(vehicle, options, speeds_mps);
   if (options.order == 2 && vehicle.max_steering_angle_rad > map.options().max_steering_angle_rad) {
     std::ostringstream text;
     text << "VehicleLimits: max_steering_angle_rad = " << vehicle.max_steering_angle_rad

@@ -167,6 +167,10 @@ ScheduleEntry blend_entries(const ScheduleEntry& a, const ScheduleEntry& b, doub
 
 //! Throws std::invalid_argument unless the speeds are finite, > 0 and strictly increasing.
 void check_speed_grid(const std::vector<double>& speeds_mps);
+//! The input checks both routes share: vehicle, options, speed grid, and no acceleration limit
+//! for order 1 (which cannot bound it). Throws std::invalid_argument naming the field.
+void check_schedule_inputs(const VehicleLimits& vehicle, const TuningOptions& options,
+                           const std::vector<double>& speeds_mps);
 
 //! Speeds first:step:last (inclusive up to rounding); throws for non-positive step or first.
 std::vector<double> speed_grid(double first_mps, double last_mps, double step_mps);
