@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "smoothsteer/smoothsteer.hpp"
+#include "support/recorded_inputs.hpp"
 
 namespace {
 
@@ -53,28 +54,11 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
   return parameters;
 }
 
-//! Poses of a closed loop that starts 2 m off the path and then tracks it.
-std::vector<ControllerInput> recorded_inputs(const std::shared_ptr<const Path>& path, int order,
-                                             Law law) {
-  LeadWheelController controller(parameters_of_order(order, law), path);
-  KinematicLoopOptions options;
-  options.speed_mps = 10.0;
-  options.duration_s = 200.0;
-  const KinematicLoopResult result =
-      run_kinematic_closed_loop(controller, {{0.0, 2.0}, 0.0}, options);
-  std::vector<ControllerInput> inputs;
-  inputs.reserve(result.trace.size());
-  for (const KinematicTraceSample& sample : result.trace) {
-    inputs.push_back(
-        {sample.pose.position, sample.pose.heading_rad, options.speed_mps, 0.0, options.period_s});
-  }
-  return inputs;
-}
-
 void update_cost(benchmark::State& state, const std::shared_ptr<const Path>& path,
                  Law law = Law::defaults) {
   const int order = static_cast<int>(state.range(0));
-  const std::vector<ControllerInput> inputs = recorded_inputs(path, order, law);
+  const std::vector<ControllerInput> inputs =
+      bench::recorded_inputs(path, parameters_of_order(order, law));
   LeadWheelController controller(parameters_of_order(order, law), path);
   ControllerOutput output;
   std::size_t index = 0;

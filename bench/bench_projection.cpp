@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "smoothsteer/smoothsteer.hpp"
+#include "support/recorded_inputs.hpp"
 
 namespace {
 
@@ -42,26 +43,9 @@ ControllerParameters second_order() {
   return parameters;
 }
 
-//! Poses of a closed loop that starts 2 m off the path and then tracks it for 200 s.
-std::vector<ControllerInput> recorded_inputs(const std::shared_ptr<const Path>& path) {
-  LeadWheelController controller(second_order(), path);
-  KinematicLoopOptions options;
-  options.speed_mps = 10.0;
-  options.duration_s = 200.0;
-  const KinematicLoopResult result =
-      run_kinematic_closed_loop(controller, {{0.0, 2.0}, 0.0}, options);
-  std::vector<ControllerInput> inputs;
-  inputs.reserve(result.trace.size());
-  for (const KinematicTraceSample& sample : result.trace) {
-    inputs.push_back(
-        {sample.pose.position, sample.pose.heading_rad, options.speed_mps, 0.0, options.period_s});
-  }
-  return inputs;
-}
-
 void BM_TrackingUpdate(benchmark::State& state) {
   const auto path = curved_path(state.range(0));
-  const std::vector<ControllerInput> inputs = recorded_inputs(path);
+  const std::vector<ControllerInput> inputs = bench::recorded_inputs(path, second_order());
   LeadWheelController controller(second_order(), path);
   ControllerOutput output;
   std::size_t index = 0;

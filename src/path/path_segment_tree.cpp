@@ -37,6 +37,20 @@ double distance_to_chord(Vec2 point, Vec2 from, Vec2 to) noexcept {
   return norm(point - (from + along * chord));
 }
 
+//! Bezier control points of a cubic segment p(t) = a0 + a1 t + a2 t^2 + a3 t^3 on [0, T]: the
+//! curve lies in their convex hull.
+std::array<Vec2, 4> bezier_control_points(const PathSegment& segment) noexcept {
+  const auto& x = segment.x_coefficients;
+  const auto& y = segment.y_coefficients;
+  const double t = segment.t_end;
+  const Vec2 b0{x[0], y[0]};
+  const Vec2 b1 = b0 + (t / 3.0) * Vec2{x[1], y[1]};
+  const Vec2 b2 = b1 + (t / 3.0) * Vec2{x[1], y[1]} + (t * t / 3.0) * Vec2{x[2], y[2]};
+  const Vec2 b3 =
+      b0 + t * Vec2{x[1], y[1]} + t * t * Vec2{x[2], y[2]} + t * t * t * Vec2{x[3], y[3]};
+  return {b0, b1, b2, b3};
+}
+
 //! A lower bound of the distance from `point` to the segment inside `capsule`.
 double capsule_distance(Vec2 point, const SegmentCapsule& capsule) noexcept {
   return distance_to_chord(point, capsule.from, capsule.to) - capsule.radius;
@@ -63,17 +77,8 @@ SegmentBox detail::tighten_box(const PathSegment& segment, const SegmentBox& box
          segment.start + segment.length * unit_from_heading(segment.start_heading_rad)});
   }
   if (segment.kind != PathSegment::Kind::cubic) return box;
-  // Bezier control points of p(t) = a0 + a1 t + a2 t^2 + a3 t^3 on [0, T]; the curve lies in
-  // their convex hull.
-  const auto& x = segment.x_coefficients;
-  const auto& y = segment.y_coefficients;
-  const double t = segment.t_end;
-  const Vec2 b0{x[0], y[0]};
-  const Vec2 b1 = b0 + (t / 3.0) * Vec2{x[1], y[1]};
-  const Vec2 b2 = b1 + (t / 3.0) * Vec2{x[1], y[1]} + (t * t / 3.0) * Vec2{x[2], y[2]};
-  const Vec2 b3 =
-      b0 + t * Vec2{x[1], y[1]} + t * t * Vec2{x[2], y[2]} + t * t * t * Vec2{x[3], y[3]};
-  const SegmentBox hull = box_of_points({b0, b1, b2, b3});
+  const std::array<Vec2, 4> b = bezier_control_points(segment);  // the curve lies in their hull
+  const SegmentBox hull = box_of_points({b[0], b[1], b[2], b[3]});
   return {{std::max(box.lower.x, hull.lower.x), std::max(box.lower.y, hull.lower.y)},
           {std::min(box.upper.x, hull.upper.x), std::min(box.upper.y, hull.upper.y)}};
 }
@@ -90,14 +95,7 @@ SegmentCapsule detail::segment_capsule(const PathSegment& segment) noexcept {
     const Vec2 center = segment.start + (1.0 / segment.curvature) * Vec2{-forward.y, forward.x};
     return {center, center, radius};
   }
-  const auto& x = segment.x_coefficients;
-  const auto& y = segment.y_coefficients;
-  const double t = segment.t_end;
-  const Vec2 b0{x[0], y[0]};
-  const Vec2 b1 = b0 + (t / 3.0) * Vec2{x[1], y[1]};
-  const Vec2 b2 = b1 + (t / 3.0) * Vec2{x[1], y[1]} + (t * t / 3.0) * Vec2{x[2], y[2]};
-  const Vec2 b3 =
-      b0 + t * Vec2{x[1], y[1]} + t * t * Vec2{x[2], y[2]} + t * t * t * Vec2{x[3], y[3]};
+  const auto [b0, b1, b2, b3] = bezier_control_points(segment);
   // The distance to the chord is convex, so its maximum over the control points' hull (which
   // holds the curve) sits at a control point. Rounding margin: 1e-9 m.
   const double deviation =

@@ -13,27 +13,7 @@
 #include <vector>
 
 #include "smoothsteer/baselines/mpc_controller.hpp"
-
-namespace {
-std::atomic<long> allocation_count{0};
-}
-
-void* operator new(std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  if (void* pointer = std::malloc(size == 0 ? 1 : size)) return pointer;
-  throw std::bad_alloc();
-}
-// Replacements of the global operator delete for the malloc-based operator new above; GCC's
-// -Wmismatched-new-delete cannot see that they pair up (it fires in the sanitizer build).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void operator delete(void* pointer) noexcept {
-  std::free(pointer);
-}
-void operator delete(void* pointer, std::size_t) noexcept {
-  std::free(pointer);
-}
-#pragma GCC diagnostic pop
+#include "support/counting_allocator.hpp"
 
 namespace smoothsteer {
 namespace {

@@ -10,28 +10,7 @@
 #include <vector>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
-
-namespace {
-std::atomic<long> allocation_count{0};
-}
-
-void* operator new(std::size_t size) {
-  allocation_count.fetch_add(1, std::memory_order_relaxed);
-  if (void* pointer = std::malloc(size == 0 ? 1 : size)) return pointer;
-  throw std::bad_alloc();
-}
-// These replace the global operator delete for the malloc-based operator new above. GCC's
-// -Wmismatched-new-delete cannot see that the two are a matching pair (it fires in the
-// sanitizer build), so it is silenced for these two definitions only.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void operator delete(void* pointer) noexcept {
-  std::free(pointer);
-}
-void operator delete(void* pointer, std::size_t) noexcept {
-  std::free(pointer);
-}
-#pragma GCC diagnostic pop
+#include "support/counting_allocator.hpp"
 
 namespace smoothsteer {
 namespace {
