@@ -264,6 +264,9 @@ void TuningOptions::validate() const {
   } else if (!(feedforward_rate_margin >= 1.0) || !std::isfinite(feedforward_rate_margin)) {
     text << "TuningOptions: feedforward_rate_margin = " << feedforward_rate_margin
          << " must be finite and >= 1";
+  } else if (!(feedforward_headroom >= 1.0 && feedforward_headroom <= 3.0)) {
+    text << "TuningOptions: feedforward_headroom = " << feedforward_headroom
+         << " must be in [1, 3]";
   } else if (!(feedforward_rate_share > 0.0 && feedforward_rate_share < 1.0)) {
     text << "TuningOptions: feedforward_rate_share = " << feedforward_rate_share
          << " must be in (0, 1)";

@@ -95,12 +95,15 @@ class LeadWheelController final : public SteeringController {
   void initialise_chain_on_feedforward(double feedforward_curvature) noexcept;
   double front_angle_from_vehicle(double vehicle_steering_angle) const noexcept;
   double vehicle_steering_angle_of_chain() const noexcept;
+  //! Largest lead curvature the friction guard allows at `speed` [1/m] (+inf: no guard).
+  double friction_guard_curvature(double speed) const noexcept;
 
   ControllerParameters parameters_;
   std::shared_ptr<const Path> path_;
   ChainBounds bounds_;
   SteeringCertificate certificate_;
   double feedforward_curvature_ = 0.0;
+  double dynamics_preview_m_ = 0.0;  //!< how far ahead the feedforward reads the path [m]
   TargetCurve target_;  //!< target curve of the current period
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
