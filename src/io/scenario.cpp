@@ -188,8 +188,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   estimation.source = source == "none"    ? SideSlipSource::none
                       : source == "truth" ? SideSlipSource::truth
                                           : SideSlipSource::observer;
-  estimation.cornering_stiffness_scale =
-      slip.number("cornering_stiffness_scale", 1.0, {0.2, 5.0});
+  estimation.cornering_stiffness_scale = slip.number("cornering_stiffness_scale", 1.0, {0.2, 5.0});
   estimation.mass_scale = slip.number("mass_scale", 1.0, {0.2, 5.0});
   estimation.yaw_rate_noise_std_radps = slip.number("yaw_rate_noise_std_radps", 0.0, {0.0, 1.0});
   estimation.lateral_acceleration_noise_std_mps2 =
@@ -224,6 +223,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   metrics.finish();
   s.metrics.steering_angle_limit_rad = s.vehicle.max_steering_angle_rad;
   s.metrics.steering_rate_limit_radps = s.vehicle.max_steering_rate_radps;
+  s.metrics.friction_limit_mps2 = s.vehicle.friction_limit_mps2();
 
   // Required (docs/scenarios.md): a file with only `name:` must not run on defaults.
   if (!c.has("path")) c.fail("path", "is required (e.g. path: {type: straight})");

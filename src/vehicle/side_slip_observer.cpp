@@ -65,7 +65,8 @@ SideSlipObserverParameters SideSlipObserverParameters::from_vehicle(
   p.cg_to_rear_axle_m = vehicle.cg_to_rear_axle_m;
   p.front_cornering_stiffness_npr =
       cornering_stiffness_scale * vehicle.front_cornering_stiffness_npr();
-  p.rear_cornering_stiffness_npr = cornering_stiffness_scale * vehicle.rear_cornering_stiffness_npr();
+  p.rear_cornering_stiffness_npr =
+      cornering_stiffness_scale * vehicle.rear_cornering_stiffness_npr();
   return p;
 }
 
@@ -173,10 +174,8 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
                   (4.0 * half[i][1 - i] + phi[i][1 - i]) * b[1 - i]);
     }
   }
-  double x[2] = {phi[0][0] * lateral_velocity_ + phi[0][1] * yaw_rate_ +
-                     gamma[0] * held_steering,
-                 phi[1][0] * lateral_velocity_ + phi[1][1] * yaw_rate_ +
-                     gamma[1] * held_steering};
+  double x[2] = {phi[0][0] * lateral_velocity_ + phi[0][1] * yaw_rate_ + gamma[0] * held_steering,
+                 phi[1][0] * lateral_velocity_ + phi[1][1] * yaw_rate_ + gamma[1] * held_steering};
   Matrix2 predicted{};
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {

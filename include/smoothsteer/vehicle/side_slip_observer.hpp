@@ -25,13 +25,13 @@
 namespace smoothsteer {
 
 struct SideSlipObserverParameters {
-  double mass_kg = 1093.3;                        //!< m [kg]
-  double yaw_inertia_kgm2 = 1791.6;               //!< Iz [kg m^2]
-  double cg_to_front_axle_m = 1.156;              //!< lf [m]
-  double cg_to_rear_axle_m = 1.422;               //!< lr [m]
-  double front_cornering_stiffness_npr = 1.3e5;   //!< Cf of the front axle [N/rad]
-  double rear_cornering_stiffness_npr = 1.05e5;   //!< Cr of the rear axle [N/rad]
-  double yaw_rate_noise_std_radps = 0.002;        //!< std of the gyro's noise [rad/s]
+  double mass_kg = 1093.3;                            //!< m [kg]
+  double yaw_inertia_kgm2 = 1791.6;                   //!< Iz [kg m^2]
+  double cg_to_front_axle_m = 1.156;                  //!< lf [m]
+  double cg_to_rear_axle_m = 1.422;                   //!< lr [m]
+  double front_cornering_stiffness_npr = 1.3e5;       //!< Cf of the front axle [N/rad]
+  double rear_cornering_stiffness_npr = 1.05e5;       //!< Cr of the rear axle [N/rad]
+  double yaw_rate_noise_std_radps = 0.002;            //!< std of the gyro's noise [rad/s]
   double lateral_acceleration_noise_std_mps2 = 0.05;  //!< std of the accelerometer's [m/s^2]
   //! Process noise: std of the unmodelled lateral force per unit mass [m/s^2] and of the
   //! unmodelled yaw acceleration [rad/s^2] (tire nonlinearity, parameter error).
