@@ -83,6 +83,12 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
     return fail(text("rear_slip_gradient_s2pm"), p.rear_slip_gradient_s2pm,
                 text("must be in [0, 0.1] s^2/m"));
   }
+  if (!std::isfinite(p.disturbance_estimation_length_m) ||
+      (p.disturbance_estimation_length_m != 0.0 &&
+       (p.disturbance_estimation_length_m < 1.0 || p.disturbance_estimation_length_m > 1000.0))) {
+    return fail(text("disturbance_estimation_length_m"), p.disturbance_estimation_length_m,
+                text("must be 0 (off) or in [1, 1000] m"));
+  }
   if (std::isnan(p.max_lateral_acceleration_mps2) || p.max_lateral_acceleration_mps2 <= 0.0) {
     return fail(text("max_lateral_acceleration_mps2"), p.max_lateral_acceleration_mps2,
                 text("must be > 0 m/s^2 (+inf: no friction guard)"));

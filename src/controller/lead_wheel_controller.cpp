@@ -43,10 +43,12 @@ void LeadWheelController::apply_parameters(const ControllerParameters& parameter
   bounds_ = compute_chain_bounds(parameters_);
   certificate_ = feedforward_certificate(parameters_, bounds_);
   chain_length_squared_ = 0.0;
+  chain_reach_ = 0.0;
   double shortest = parameters_.order > 0 ? parameters_.wheelbases_m[0] : 0.0;
   for (int i = 0; i < parameters_.order; ++i) {
     const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared_ += lambda * lambda;
+    chain_reach_ += lambda;
     shortest = std::min(shortest, lambda);
   }
   largest_substep_m_ = parameters_.max_substep_fraction * shortest;
@@ -136,6 +138,8 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
 
 void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   direction_ = 1.0;
+  has_previous_pose_ = false;
+  disturbance_estimate_ = 0.0;
   command_history_count_ = 0;
   command_history_next_ = 0;
   rear_hint_.reset();
@@ -165,8 +169,8 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
   if (std::isfinite(rate) && rate > 0.0) {
     const double bound = std::max(parameters_.feedforward_curvature_bound(), 1e-12);
-    curvature = preview_curvature(*path_, lead.arc_length_m + dynamics_preview_m_,
-                                  kTargetCurveStep, rate, bound);
+    curvature = preview_curvature(*path_, lead.arc_length_m + dynamics_preview_m_, kTargetCurveStep,
+                                  rate, bound);
   } else if (rear_target || dynamics_preview_m_ > 0.0) {
     const double s = lead.arc_length_m + dynamics_preview_m_;
     if (dynamics_preview_m_ > 0.0) curvature.at = path_->evaluate(s).curvature;
@@ -174,8 +178,19 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
     curvature.after = path_->evaluate(s + kTargetCurveStep).curvature;
   }
   if (!rear_target) return {0.0, 0.0, curvature.at};
-  return rear_axle_target_curve(curvature.before, curvature.at, curvature.after, kTargetCurveStep,
-                                chain_length_squared_);
+  // With a plant disturbance kappa_d the chain is stationary on kappa - kappa_d while the rear
+  // axle follows kappa: the lead wheel's offset is that of the chain's stationary shape,
+  // e0(kappa - kappa_d), minus the path's extra bend over the chain's reach l = sum lambda_i,
+  // kappa_d l^2 / 2
+  // (docs/feedforward.md, "disturbances on the vehicle"); the curve itself keeps the path's
+  // curvature.
+  const double d = disturbance_estimate_;
+  TargetCurve target =
+      rear_axle_target_curve(curvature.before - d, curvature.at - d, curvature.after - d,
+                             kTargetCurveStep, chain_length_squared_);
+  target.offset -= 0.5 * d * chain_reach_ * chain_reach_;
+  target.curvature += d;
+  return target;
 }
 
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
@@ -195,11 +210,42 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
   const double path_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
   const double error = state.projection.lateral_error_m - target_.offset;
   state.relative_heading = wrap_angle(path_heading - target_.heading);
+  // The plant adds kappa_d to every curvature of the chain: the lead wheel asks that much less.
   state.feedforward_target =
-      frenet_feedforward_curvature(target_.curvature, error, state.relative_heading);
+      frenet_feedforward_curvature(target_.curvature, error, state.relative_heading) -
+      disturbance_estimate_;
   state.law = dubins_switching_law(error, state.relative_heading,
                                    parameters_.switching_curvature_bound(), parameters_);
   return state;
+}
+
+void LeadWheelController::update_disturbance_estimate(const ControllerInput& input) noexcept {
+  const double length = parameters_.disturbance_estimation_length_m;
+  const double course = input.heading_rad + input.rear_axle_side_slip_rad;
+  if (length > 0.0 && has_previous_pose_ && command_history_count_ > 0 && direction_ > 0.0 &&
+      input.speed_mps > 0.0) {
+    const double distance = norm(input.rear_axle_position - previous_position_);
+    if (distance > 1e-6) {
+      // The steering in effect over the last period: issued `actuator_delay_s` earlier.
+      const auto age = std::min<std::size_t>(
+          command_history_count_ - 1,
+          static_cast<std::size_t>(std::lround(parameters_.actuator_delay_s / input.period_s)));
+      const double commanded_steering =
+          command_history_[(command_history_next_ + command_history_size - 1 - age) %
+                           command_history_size]
+              .steering_rad;
+      const double commanded = std::tan(commanded_steering) / parameters_.vehicle_wheelbase_m;
+      const double measured = wrap_angle(course - previous_course_) / distance;
+      const double gain = std::min(1.0, distance / length);
+      const double bound = parameters_.feedforward_curvature_bound();
+      disturbance_estimate_ =
+          std::clamp(disturbance_estimate_ + gain * (measured - commanded - disturbance_estimate_),
+                     -bound, bound);
+    }
+  }
+  previous_position_ = input.rear_axle_position;
+  previous_course_ = course;
+  has_previous_pose_ = true;
 }
 
 Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const noexcept {
@@ -241,6 +287,7 @@ Status LeadWheelController::update(const ControllerInput& input,
     direction_ = sign(input.speed_mps);
     initialise_chain(last_steering_angle_);
   }
+  update_disturbance_estimate(input);
   // Where the feedforward reads the path (ControllerParameters::preview_time_s).
   const double speed_magnitude = std::abs(input.speed_mps);
   dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude +
@@ -347,7 +394,7 @@ Status LeadWheelController::update(const ControllerInput& input,
   const double lag = parameters_.actuator_time_constant_s;
   if (lag > 0.0 && n >= 2) {
     const double count = parameters_.actuator_lag_count;
-    const double a1 = count * lag;                                // a1 = m T
+    const double a1 = count * lag;                              // a1 = m T
     const double a2 = 0.5 * count * (count - 1.0) * lag * lag;  // a2 = C(m, 2) T^2
     if (n == 2) {  // derivatives up to n - 1 = 1: the command's rate delta' + a1 delta''
       steering += a1 * rate;

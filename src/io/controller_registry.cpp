@@ -38,13 +38,15 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
   }
   p.actuator_delay_s = c.number("actuator_delay_s", defaults.actuator_delay_s,
                                 {0.0, ControllerParameters::max_actuator_delay_s});
+  p.disturbance_estimation_length_m = c.number(
+      "disturbance_estimation_length_m", defaults.disturbance_estimation_length_m, {0.0, 1000.0});
   p.preview_time_s = c.number("preview_time_s", defaults.preview_time_s,
                               {0.0, ControllerParameters::max_actuator_delay_s});
   // slip_preview: the feedforward looks K_r v^2 further ahead, K_r from the vehicle file.
-  p.rear_slip_gradient_s2pm =
-      c.boolean("slip_preview", defaults.rear_slip_gradient_s2pm > 0.0)
-          ? std::min(vehicle.rear_slip_gradient(), ControllerParameters::max_rear_slip_gradient_s2pm)
-          : 0.0;
+  p.rear_slip_gradient_s2pm = c.boolean("slip_preview", defaults.rear_slip_gradient_s2pm > 0.0)
+                                  ? std::min(vehicle.rear_slip_gradient(),
+                                             ControllerParameters::max_rear_slip_gradient_s2pm)
+                                  : 0.0;
   // friction_guard: never ask more than the tires' mu g (vehicle file) of lateral acceleration.
   p.max_lateral_acceleration_mps2 =
       c.boolean("friction_guard", std::isfinite(defaults.max_lateral_acceleration_mps2))

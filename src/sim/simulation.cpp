@@ -40,8 +40,7 @@ double observe_rear_axle_side_slip(SideSlipObserver& observer, const VehicleMode
                                    const VehicleState& state, double steering_angle,
                                    double longitudinal_acceleration, double period,
                                    const SideSlipEstimation& slip, Noise&& noise) {
-  const VehicleState rates =
-      vehicle.derivative(state, steering_angle, longitudinal_acceleration);
+  const VehicleState rates = vehicle.derivative(state, steering_angle, longitudinal_acceleration);
   SideSlipMeasurement measurement;
   measurement.speed_mps = state.vx_mps;
   measurement.yaw_rate_radps = state.yaw_rate_radps;
@@ -102,6 +101,10 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
   }
   if (!std::isfinite(matched_disturbance) || std::abs(matched_disturbance) > 1.0) {
     return bad("matched_disturbance", matched_disturbance, "must be in [-1, 1] 1/m");
+  }
+  if (!std::isfinite(plant_curvature_disturbance) || std::abs(plant_curvature_disturbance) > 1.0) {
+    return bad("plant_curvature_disturbance", plant_curvature_disturbance,
+               "must be in [-1, 1] 1/m");
   }
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
     return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
@@ -176,9 +179,10 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   controller.reset(0.0);
   // Matched disturbance: into the controller's chain where it has one, else into the plant.
   const double plant_disturbance =
-      controller.set_matched_disturbance(parameters.matched_disturbance)
-          ? 0.0
-          : parameters.matched_disturbance;
+      parameters.plant_curvature_disturbance +
+      (controller.set_matched_disturbance(parameters.matched_disturbance)
+           ? 0.0
+           : parameters.matched_disturbance);
   const detail::PlantContext plant{vehicle,
                                    speed,
                                    actuator,

@@ -284,3 +284,63 @@ TEST(VehicleDynamicsValidation, EveryNewParameterIsNamed) {
 
 }  // namespace
 }  // namespace smoothsteer
+
+namespace smoothsteer {
+namespace {
+
+// Issue 8, item 5: a constant curvature disturbance on the PLANT's rear axle (not injected into
+// the controller's model). disturbance_estimation_length_m estimates it to within 3 %, and the
+// feedforward absorbs it: the steady rear-axle offset shrinks by at least a quarter (typically
+// 30-60 %). It does not vanish (docs/feedforward.md, "disturbances on the vehicle", says why this
+// is still open).
+TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndShrinksTheOffset) {
+  const VehicleParameters car;
+  const int cases = testing::property_cases(20);
+  for (int c = 0; c < cases; ++c) {
+    const std::uint64_t seed = testing::case_seed(c);
+    testing::Random random(seed);
+    const bool circle = random.coin();
+    const double radius = random.uniform(40.0, 100.0);
+    auto path = std::make_shared<const Path>(
+        circle ? PathBuilder({0, 0}, 0.0).line(5.0).arc(radius, 1.5 * pi).build()
+               : PathBuilder({0, 0}, 0.0).line(400.0).build());
+    ControllerParameters p = ControllerParameters::paper_c1(car.wheelbase_m(), 1.0, 0.1, 0.3);
+    p.feedforward_share = 0.6;
+    p.feedforward_curvature_rate = 0.01;
+    p.cornering_target = CorneringTarget::rear_axle;
+    const double disturbance =
+        (random.coin() ? 1.0 : -1.0) * random.uniform(0.2, 0.9) * p.switching_curvature_bound();
+    const double speed = random.uniform(3.0, 8.0);
+    struct Outcome {
+      double offset, estimate;
+    };
+    auto run_with = [&](double estimation_length) {
+      ControllerParameters q = p;
+      q.disturbance_estimation_length_m = estimation_length;
+      LeadWheelController controller(q, path);
+      KinematicVehicleModel model(car);
+      SimulationParameters sim;
+      sim.duration_s = 150.0 / speed;
+      sim.plant_curvature_disturbance = disturbance;
+      ActuatorParameters ideal;
+      ideal.ideal = true;
+      ideal.dead_time_s = 0.0;
+      const SimulationResult run = simulate(*path, model, ideal, SpeedProfile{speed, speed}, sim,
+                                            {{0.0, 0.0}, 0.0}, controller);
+      EXPECT_EQ(run.status, Status::ok) << testing::seed_message(seed);
+      EXPECT_EQ(run.stop_reason, "duration") << testing::seed_message(seed);
+      return Outcome{std::abs(run.trace.back().lateral_error_m), controller.disturbance_estimate()};
+    };
+    const Outcome without = run_with(0.0);
+    const Outcome with = run_with(5.0);
+    const std::string inputs = "kappa_d " + std::to_string(disturbance) +
+                               (circle ? " circle R " : " line ") + std::to_string(radius) + " v " +
+                               std::to_string(speed) + "; " + testing::seed_message(seed);
+    EXPECT_NEAR(with.estimate, disturbance, 0.03 * std::abs(disturbance)) << inputs;
+    EXPECT_LT(with.offset, 0.75 * without.offset)
+        << "with " << with.offset << " without " << without.offset << "; " << inputs;
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer

@@ -84,6 +84,13 @@ struct ControllerParameters {
   //! steers). The preview only moves where kappa_ff looks, so |kappa_ff| <= kbar_ff and
   //! |d kappa_ff / ds| <= L_ff, and the certificate, hold unchanged. 0 = off.
   double preview_time_s = 0.0;  //!< [s], in [0, max_actuator_delay_s]
+  //! Disturbance estimation (docs/feedforward.md, "disturbances on the vehicle"): a curvature
+  //! the plant adds at the rear axle (understeer, a banked road, a steering offset) is estimated
+  //! as the measured course curvature minus the commanded one, low-passed over this distance [m],
+  //! and the feedforward aims the chain at the path's curvature minus it. The estimate enters
+  //! only through kappa_ff, so |kappa_ff| <= kbar_ff, its rate limit and the certificate hold.
+  //! 0 = off; else in [1, 1000] m.
+  double disturbance_estimation_length_m = 0.0;
   double rear_slip_gradient_s2pm = 0.0;  //!< K_r [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
   static constexpr double max_rear_slip_gradient_s2pm = 0.1;
   //! Friction guard (docs/vehicle_dynamics.md): at speed v the lead wheel's curvature stays

@@ -69,6 +69,9 @@ struct SimulationParameters {
   //! item 2) gets it there; for any other it bends the rear-axle path:
   //! tan(delta_eff) = tan(delta) + L kappa_d.
   double matched_disturbance = 0.0;
+  //! Curvature disturbance kappa_d [1/m] on the PLANT's rear axle, whatever the controller
+  //! (understeer, a banked road, a steering offset): tan(delta_eff) = tan(delta) + L kappa_d.
+  double plant_curvature_disturbance = 0.0;
   double position_noise_std_m = 0.0;   //!< std of Gaussian noise on x and y of the rear axle [m]
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
@@ -109,7 +112,7 @@ struct TraceSample {
   double steering_actual_rad = 0.0;  //!< actuator output delta_actual
   double steering_actual_rate_radps = 0.0;
   double steering_actual_acceleration_radps2 = 0.0;
-  double side_slip_rad = 0.0;  //!< atan(vy / vx) at the CG
+  double side_slip_rad = 0.0;             //!< atan(vy / vx) at the CG
   double rear_side_slip_rad = 0.0;        //!< true beta_r = atan((vy - lr r) / vx)
   double rear_side_slip_input_rad = 0.0;  //!< beta_r given to the controller (estimate)
   double lateral_velocity_mps = 0.0;
