@@ -1,6 +1,6 @@
 """Example 1: the C^1 controller (n = 2) drives a kinematic car onto a circle (the README loop).
 
-Run from the repository root with the module built: PYTHONPATH=build/ci/python python3 examples/01_follow_circle.py
+Run from the repository root: PYTHONPATH=build/release/python /usr/bin/python3 examples/01_follow_circle.py
 """
 import smoothsteer as ss
 

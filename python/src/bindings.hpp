@@ -34,6 +34,10 @@ void bind_baselines(py::module_& m);
 void bind_tuning(py::module_& m);
 //! KinematicSingleTrack, Gear, PathPlan, CuspSequencer.
 void bind_cusps(py::module_& m);
+//! simulate_kinematic(): the kinematic closed loop.
+void bind_kinematic_loop(py::module_& m);
+//! solve_optimal_reaching(), HosmController, ReachingBenchmarkOptions.
+void bind_evaluation(py::module_& m);
 //! load_scenario(), run_scenario(), Scenario.
 void bind_scenario(py::module_& m);
 

@@ -1,5 +1,6 @@
 // The extension module _smoothsteer: Python bindings of smoothsteer (docs/python.md).
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <string>
@@ -38,13 +39,21 @@ PYBIND11_MODULE(_smoothsteer, m) {
   using namespace smoothsteer::python;
   m.doc() = "smoothsteer: n-smooth, differentially bounded path-tracking control (SI units)";
   m.attr("__version__") = smoothsteer::io::tool_version();
+  // pybind11 looks numpy's C API up once, in a function-local static, on the first array it
+  // makes. Made from two threads at once, that look-up deadlocks (one thread holds the GIL and
+  // waits for the static, the other holds the static and waits for the GIL in numpy's import).
+  // So the first array is made here, at import, in one thread.
+  pybind11::array_t<double> first_array(1);
+  (void)first_array;
   // Scenario files may name every comparison controller, as in the CLI.
   smoothsteer::register_comparison_controllers();
   bind_errors(m);
   bind_path(m);
   bind_controller(m);
   bind_cusps(m);
+  bind_kinematic_loop(m);
   bind_baselines(m);
   bind_tuning(m);
+  bind_evaluation(m);
   bind_scenario(m);
 }

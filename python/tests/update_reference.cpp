@@ -1,7 +1,8 @@
 // Reference for tests/test_update.py: LeadWheelController::update() in C++ on the inputs read
 // from stdin, one "x y heading speed acceleration period" line per call, on the path and
 // parameters given as arguments. Prints "status delta rate acceleration e e_front e_lead sigma"
-// per call with 17 significant digits, so that Python's results can be compared exactly.
+// per call with 17 significant digits, so that Python's results can be compared exactly, or
+// "invalid MESSAGE" once for parameters the controller rejects.
 //
 // usage: python_update_reference circle|waypoints ORDER KBAR K_ROB FF_SHARE DELAY_S
 
@@ -29,6 +30,11 @@ int main(int argc, char** argv) {
   parameters.k_rob = std::strtod(argv[4], nullptr);
   parameters.feedforward_share = std::strtod(argv[5], nullptr);
   parameters.actuator_delay_s = std::strtod(argv[6], nullptr);
+  const std::string invalid = parameters.validation_error();
+  if (!invalid.empty()) {  // the constructor would throw this message
+    std::printf("invalid %s\n", invalid.c_str());
+    return 0;
+  }
   LeadWheelController controller(parameters, path);
   ControllerInput input;
   while (std::scanf("%lf %lf %lf %lf %lf %lf", &input.rear_axle_position.x,

@@ -1,16 +1,22 @@
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
+#include <string_view>
+
+#include "smoothsteer/sim/simulation.hpp"
 
 namespace smoothsteer {
 
 KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, const Pose2& start,
                                               const KinematicLoopOptions& options) {
   KinematicLoopResult result;
+  result.options = options;
   KinematicSingleTrack plant{options.wheelbase_m};
   const int steps = static_cast<int>(std::ceil(options.duration_s / options.period_s));
   if (options.record_trace) result.trace.reserve(static_cast<std::size_t>(steps));
@@ -57,23 +63,64 @@ KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, co
   return result;
 }
 
+namespace {
+
+//! A kinematic sample in the columns of the kinetic simulation's trace (trace_row()), so that
+//! the demo's trace and `smoothsteer run`'s trace.csv share one format and one plot script. The
+//! kinematic car has no actuator (delta_actual = delta_cmd, held) and no side slip.
+TraceSample as_trace_sample(const KinematicTraceSample& k, const KinematicLoopOptions& options) {
+  const TrackingDiagnostics& d = k.output.diagnostics;
+  TraceSample s;
+  s.time_s = k.time_s;
+  s.distance_m = k.distance_m;
+  s.rear_axle = k.pose;
+  s.speed_mps = options.speed_mps;
+  s.path_arc_length_m = d.path_arc_length_m;
+  s.path_curvature = d.path_curvature;
+  s.lateral_error_m = d.lateral_error_m;
+  s.heading_error_rad = d.heading_error_rad;
+  s.front_lateral_error_m = d.front_lateral_error_m;
+  s.lead_lateral_error_m = d.lead_lateral_error_m;
+  s.measured_lateral_error_m = d.lateral_error_m;
+  s.sliding_variable = d.sliding_variable;
+  s.lead_curvature = d.lead_curvature;
+  s.steering_command_rad = k.output.steering_angle_rad;
+  s.steering_command_rate_radps = k.output.steering_rate_radps;
+  s.steering_command_acceleration_radps2 = k.output.steering_acceleration_radps2;
+  s.steering_actual_rad = k.output.steering_angle_rad;
+  s.steering_actual_rate_radps = k.output.steering_rate_radps;
+  s.steering_actual_acceleration_radps2 = k.output.steering_acceleration_radps2;
+  s.yaw_rate_radps =
+      options.speed_mps *
+      (std::tan(k.output.steering_angle_rad) / options.wheelbase_m + options.curvature_disturbance);
+  return s;
+}
+
+}  // namespace
+
 void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::string& file_path) {
   const std::string temporary = file_path + ".tmp";
   {
-    std::ofstream file(temporary);
+    std::ofstream file(temporary, std::ios::binary);
     if (!file) throw std::runtime_error("cannot open '" + temporary + "' for writing");
-    file.precision(9);
-    file << "t,distance,x,y,psi,delta_cmd,delta_rate,delta_acc,e,heading_error,e_front,e_lead,"
-            "psi_lead,sigma,kappa_lead,path_s\n";
+    const char* separator = "";
+    for (const char* name : trace_column_names()) {
+      file << separator << name;
+      separator = ",";
+    }
+    file << '\n';
+    std::array<char, 32> number;
     for (const KinematicTraceSample& sample : result.trace) {
-      const TrackingDiagnostics& d = sample.output.diagnostics;
-      file << sample.time_s << ',' << sample.distance_m << ',' << sample.pose.position.x << ','
-           << sample.pose.position.y << ',' << sample.pose.heading_rad << ','
-           << sample.output.steering_angle_rad << ',' << sample.output.steering_rate_radps << ','
-           << sample.output.steering_acceleration_radps2 << ',' << d.lateral_error_m << ','
-           << d.heading_error_rad << ',' << d.front_lateral_error_m << ',' << d.lead_lateral_error_m
-           << ',' << d.lead_heading_error_rad << ',' << d.sliding_variable << ','
-           << d.lead_curvature << ',' << d.path_arc_length_m << '\n';
+      separator = "";
+      for (const double value : trace_row(as_trace_sample(sample, result.options))) {
+        // 9 significant digits, as trace.csv (io/trace_csv.cpp).
+        const auto end = std::to_chars(number.data(), number.data() + number.size(), value,
+                                       std::chars_format::general, 9)
+                             .ptr;
+        file << separator << std::string_view(number.data(), end - number.data());
+        separator = ",";
+      }
+      file << '\n';
     }
     if (!file) throw std::runtime_error("failed while writing '" + temporary + "'");
   }

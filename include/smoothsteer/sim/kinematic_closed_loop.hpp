@@ -32,6 +32,7 @@ struct KinematicTraceSample {
 
 struct KinematicLoopResult {
   Status status = Status::ok;
+  KinematicLoopOptions options;  //!< the options of the run
   std::vector<KinematicTraceSample> trace;
   double final_lateral_error_m = 0.0;
   double final_heading_error_rad = 0.0;
@@ -46,8 +47,10 @@ struct KinematicLoopResult {
 KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, const Pose2& start,
                                               const KinematicLoopOptions& options);
 
-//! Writes the trace as CSV (columns documented in docs/controller.md) to `file_path` via a
-//! temporary file and rename, so that no half-written file is left behind.
+//! Writes the trace as CSV to `file_path` via a temporary file and rename, so that no
+//! half-written file is left behind. The columns are those of `smoothsteer run`'s trace.csv
+//! (trace_column_names(), docs/cli.md), with the ideal actuator of the kinematic loop
+//! (delta_actual = delta_cmd) and no side slip, so scripts/plot_trace.py reads both.
 void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::string& file_path);
 
 }  // namespace smoothsteer
