@@ -7,7 +7,9 @@ Usage: /usr/bin/python3 scripts/plot_trace.py DIR/trace.csv [OUT.png]
 Beside the trace it reads, when present:
   summary.json     (written by `run`) for the title (scenario, controller, speed), the vehicle's
                    steering limits and the controller's schedule, whose certified rate and
-                   acceleration at the current speed are drawn as bounds;
+                   acceleration at the current speed are drawn as bounds (for a fixed lead-wheel
+                   controller the bounds come from its certificate, if the Python module
+                   smoothsteer can be imported);
   path.csv, or <trace name>_path.csv   (written by `run --plot` and by the demo) for the
                    reference path itself; without it the path is drawn from the closest points.
 Needs matplotlib and numpy (Debian python3-matplotlib, python3-numpy).
@@ -58,22 +60,38 @@ def reference_path(trace_path, t):
             "reference path (closest points)")
 
 
-def certified_bounds(summary, speed):
-    """The schedule's certified rate and acceleration at each speed (the entry the controller
-    uses: the first grid speed >= |v|), or None without a schedule."""
+def certified_bounds(summary, speed, acceleration):
+    """Certified |rate| and |acceleration| of the command at each sample, or None: from the
+    controller's schedule (the entry it uses: the first grid speed >= |v|), else, if the Python
+    module smoothsteer can be imported, from the certificate of a fixed lead-wheel controller
+    (per metre travelled, times |v| and v^2; the box bound when the rate is not certified)."""
     controller = summary["parameters"].get("controller", {}) if summary else {}
     schedule = controller.get("schedule")
-    if not schedule:
+    if schedule:
+        scenario_directory = os.path.dirname(summary.get("scenario_file", ""))
+        file = schedule if os.path.isabs(schedule) else os.path.join(scenario_directory, schedule)
+        if not os.path.exists(file):
+            return None
+        table = read_columns(file)
+        index = np.minimum(np.searchsorted(table["speed_mps"], np.abs(speed) - 1e-9),
+                           len(table["speed_mps"]) - 1)
+        return (table["max_steering_rate_radps"][index],
+                table["max_steering_acceleration_radps2"][index])
+    if not summary:
         return None
-    scenario_directory = os.path.dirname(summary.get("scenario_file", ""))
-    file = schedule if os.path.isabs(schedule) else os.path.join(scenario_directory, schedule)
-    if not os.path.exists(file):
+    try:
+        import smoothsteer
+        scenario = smoothsteer.load_scenario(summary["scenario_file"], summary["overrides"])
+        bounds = smoothsteer.scenario_certificate(scenario)
+    except Exception:  # no module, or the scenario moved: no bound line
         return None
-    table = read_columns(file)
-    index = np.minimum(np.searchsorted(table["speed_mps"], np.abs(speed) - 1e-9),
-                       len(table["speed_mps"]) - 1)
-    return (table["max_steering_rate_radps"][index],
-            table["max_steering_acceleration_radps2"][index])
+    if bounds is None:
+        return None
+    rate = bounds["rate_per_meter"]
+    if not np.isfinite(rate):
+        rate = bounds["box_rate_per_meter"]
+    return (rate * np.abs(speed),
+            speed ** 2 * bounds["acceleration_per_meter2"] + np.abs(acceleration) * rate)
 
 
 def held_derivatives(t, delta):
@@ -85,7 +103,7 @@ def held_derivatives(t, delta):
 
 
 def draw_limits(axis, bound_t, bound, limit, unit):
-    if bound is not None:
+    if bound is not None and np.isfinite(bound).any():
         axis.plot(bound_t, bound, "g--", linewidth=1.0, label="certified bound")
         axis.plot(bound_t, -bound, "g--", linewidth=1.0)
     if limit is not None and np.isfinite(limit):
@@ -126,26 +144,26 @@ def main():
     for key, name in (("e", "e (rear axle)"), ("e_front", "e_front"), ("e_lead", "e_lead")):
         axes[1].plot(time, t[key], linewidth=1.0, label=name)
     axes[1].set_ylabel("lateral error [m]")
-    axes[1].legend(loc="upper right", ncol=3)
+    axes[1].legend(loc="best", ncol=3)
     axes[2].plot(time, t["delta_cmd"], linewidth=1.0, label="delta_cmd")
     axes[2].plot(time, t["delta_actual"], linewidth=1.0, label="delta_actual")
     axes[2].set_ylabel("steering angle [rad]")
-    axes[2].legend(loc="upper right")
+    axes[2].legend(loc="best")
     held_rate, held_acceleration = held_derivatives(time, t["delta_cmd"])
-    bounds = certified_bounds(summary, t["v"])
+    bounds = certified_bounds(summary, t["v"], t["a"])
     axes[3].plot(time, held_rate, linewidth=1.0, label="held command")
     axes[3].plot(time, t["delta_actual_rate"], linewidth=1.0, label="actuator output")
     draw_limits(axes[3], time, bounds[0] if bounds else None,
                 vehicle.get("max_steering_rate_radps"), "rad/s")
     axes[3].set_ylabel("steering rate [rad/s]")
-    axes[3].legend(loc="upper right", fontsize=8, ncol=2)
+    axes[3].legend(loc="best", fontsize=8, ncol=2)
     axes[4].plot(time, held_acceleration, linewidth=1.0, label="held command")
     axes[4].plot(time, t["delta_actual_acc"], linewidth=1.0, label="actuator output")
     draw_limits(axes[4], time, bounds[1] if bounds else None,
                 vehicle.get("max_steering_acceleration_radps2"), "rad/s^2")
     axes[4].set_ylabel("steering acceleration [rad/s^2]")
     axes[4].set_xlabel("t [s]")
-    axes[4].legend(loc="upper right", fontsize=8, ncol=2)
+    axes[4].legend(loc="best", fontsize=8, ncol=2)
     for axis in axes[1:]:
         axis.grid(alpha=0.3)
     figure.suptitle(title(trace_path, summary, t))

@@ -48,6 +48,7 @@ from ._smoothsteer import (  # noqa: F401
     VehicleLimits,
     comparison_controller_names,
     parameters_for_vehicle,
+    scenario_certificate,
     simulate_kinematic,
     solve_optimal_reaching,
     trace_column_names,

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/io/run_output.hpp"
 #include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/sim/metrics.hpp"
@@ -56,6 +57,20 @@ py::tuple run(const io::Scenario& scenario) {
   return py::make_tuple(trace, from_json(io::summary_json(scenario, result)));
 }
 
+//! The certified bounds of the scenario's controller if it is a (fixed) LeadWheelController:
+//! rate [rad/m] and acceleration [rad/m^2] per metre travelled, and the box bound of the
+//! invariant sets [rad/m]; None for any other controller (a schedule's bounds are in its CSV).
+py::object certificate(const io::Scenario& scenario) {
+  const std::unique_ptr<SteeringController> controller = io::make_controller(scenario);
+  const auto* lead_wheel = dynamic_cast<const LeadWheelController*>(controller.get());
+  if (!lead_wheel) return py::none();
+  py::dict bounds;
+  bounds["rate_per_meter"] = lead_wheel->certificate().rate_per_meter;
+  bounds["acceleration_per_meter2"] = lead_wheel->certificate().acceleration_per_meter2;
+  bounds["box_rate_per_meter"] = lead_wheel->bounds().steering_rate_per_meter;
+  return bounds;
+}
+
 }  // namespace
 
 void bind_scenario(py::module_& m) {
@@ -83,6 +98,10 @@ void bind_scenario(py::module_& m) {
 
   m.def("_load_scenario", &io::load_scenario, py::arg("file"), py::arg("overrides"));
   m.def("_run_scenario", &run, py::arg("scenario"));
+  m.def("scenario_certificate", &certificate, py::arg("scenario"),
+        "Certified bounds of a scenario's lead-wheel controller, per metre travelled: a dict "
+        "with rate_per_meter [rad/m], acceleration_per_meter2 [rad/m^2] (inf where the "
+        "parameters certify none) and box_rate_per_meter [rad/m]; None for other controllers.");
   m.def(
       "trace_column_names",
       [] {

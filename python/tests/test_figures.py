@@ -42,3 +42,20 @@ def test_demo_trace_has_the_run_columns_and_plots(tmp_path):
                             env=python_environment())
     assert result.returncode == 0, result.stderr
     assert png.exists()
+
+
+def test_run_plot_draws_the_path_and_the_bounds(tmp_path):
+    """`run --plot` writes path.csv and the PNG; with the module importable the plot script
+    takes a fixed lead-wheel controller's bounds from scenario_certificate()."""
+    out = tmp_path / "run"
+    result = subprocess.run([str(BUILD / "apps" / "smoothsteer"), "run",
+                             "scenarios/reaching_p02pi.yaml", "--out", str(out), "--plot"],
+                            cwd=ROOT, env=python_environment(), capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert (out / "trace.png").exists()
+    with open(out / "path.csv", newline="") as handle:
+        rows = list(csv.reader(handle))
+    assert rows[0] == ["x", "y"] and len(rows) > 100
+    bounds = ss.scenario_certificate(ss.load_scenario("scenarios/reaching_p02pi.yaml"))
+    assert bounds["box_rate_per_meter"] > 0.0
+    assert ss.scenario_certificate(ss.load_scenario("scenarios/lane_change_15.yaml")) is None
