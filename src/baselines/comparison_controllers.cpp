@@ -13,10 +13,13 @@ namespace smoothsteer {
 void ComparisonSetup::validate() const {
   const char* owner = "ComparisonSetup";
   if (!path) throw std::invalid_argument("ComparisonSetup: path is null; a path is required");
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(nominal_speed_mps), owner, "nominal_speed_mps",
-                  nominal_speed_mps, "must be finite and > 0");
+  // Upper bounds: beyond them the bisection of proposed_parameters and the baselines' gains
+  // overflow (issue 12, defect 2: wheelbase_m = 1e308 was accepted).
+  detail::require(detail::positive_finite(wheelbase_m) && wheelbase_m <= max_wheelbase_m, owner,
+                  "wheelbase_m", wheelbase_m, "must be in (0, 1000]");
+  detail::require(detail::positive_finite(nominal_speed_mps) &&
+                      nominal_speed_mps <= ControllerInputRange::max_abs_speed_mps,
+                  owner, "nominal_speed_mps", nominal_speed_mps, "must be in (0, 1000]");
   limits.validate();
   detail::require(std::isfinite(k_rob) && k_rob >= 0.0 && k_rob < 1.0, owner, "k_rob", k_rob,
                   "must be in [0, 1)");

@@ -31,7 +31,8 @@ void StanleyController::reset(double measured_steering_angle_rad) noexcept {
   detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
 }
 
-Status StanleyController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status StanleyController::compute_command(const ControllerInput& input,
+                                          ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const Vec2 front_axle =
@@ -83,8 +84,8 @@ double PurePursuitController::lookahead_m(double speed_mps) const noexcept {
       parameters_.min_lookahead_m, parameters_.max_lookahead_m);
 }
 
-Status PurePursuitController::update(const ControllerInput& input,
-                                     ControllerOutput& output) noexcept {
+Status PurePursuitController::compute_command(const ControllerInput& input,
+                                              ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double previous = steering_;

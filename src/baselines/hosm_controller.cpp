@@ -68,7 +68,8 @@ double HosmController::steering_rate_per_meter(double lateral_error_m, double he
   return rate;
 }
 
-Status HosmController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status HosmController::compute_command(const ControllerInput& input,
+                                       ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   // Forward driving only: in reverse (or at rest) the command is held.

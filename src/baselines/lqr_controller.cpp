@@ -44,7 +44,8 @@ void LqrController::reset(double measured_steering_angle_rad) noexcept {
   detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
 }
 
-Status LqrController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status LqrController::compute_command(const ControllerInput& input,
+                                      ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double previous = steering_;

@@ -97,7 +97,8 @@ void MpcController::reset(double measured_steering_angle_rad) noexcept {
   first_update_ = true;
 }
 
-Status MpcController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status MpcController::compute_command(const ControllerInput& input,
+                                      ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double period = input.period_s;

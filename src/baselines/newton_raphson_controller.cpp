@@ -67,8 +67,8 @@ void NewtonRaphsonController::reset(double measured_steering_angle_rad) noexcept
   rate_ = 0.0;
 }
 
-Status NewtonRaphsonController::update(const ControllerInput& input,
-                                       ControllerOutput& output) noexcept {
+Status NewtonRaphsonController::compute_command(const ControllerInput& input,
+                                                ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double speed = input.speed_mps;

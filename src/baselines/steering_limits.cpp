@@ -72,8 +72,8 @@ void SaturatedController::reset(double measured_steering_angle_rad) noexcept {
   first_ = true;
 }
 
-Status SaturatedController::update(const ControllerInput& input,
-                                   ControllerOutput& output) noexcept {
+Status SaturatedController::compute_command(const ControllerInput& input,
+                                            ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   ControllerOutput raw = output;
   const Status status = inner_->update(input, raw);

@@ -54,6 +54,9 @@ struct ComparisonSetup {
   NewtonRaphsonParameters newton_raphson;
   MpcParameters mpc;
 
+  //! Largest wheelbase_m accepted [m].
+  static constexpr double max_wheelbase_m = 1e3;
+
   void validate() const;
 };
 

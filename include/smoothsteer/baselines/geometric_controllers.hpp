@@ -33,7 +33,11 @@ struct StanleyParameters {
 class StanleyController final : public SteeringController {
  public:
   StanleyController(const StanleyParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "stanley"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
@@ -59,7 +63,11 @@ struct PurePursuitParameters {
 class PurePursuitController final : public SteeringController {
  public:
   PurePursuitController(const PurePursuitParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "pure_pursuit"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

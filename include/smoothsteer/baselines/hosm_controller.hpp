@@ -48,7 +48,11 @@ struct HosmParameters {
 class HosmController final : public SteeringController {
  public:
   HosmController(const HosmParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "hosm"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

@@ -42,7 +42,11 @@ LqrGains lqr_gains(const LqrParameters& parameters, double speed_mps) noexcept;
 class LqrController final : public SteeringController {
  public:
   LqrController(const LqrParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "lqr"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

@@ -73,7 +73,10 @@ class MpcController final : public SteeringController {
   MpcController(const MpcController&) = delete;
   MpcController& operator=(const MpcController&) = delete;
 
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override {
     return parameters_.solver == MpcSolver::constrained ? "mpc_constrained" : "mpc";

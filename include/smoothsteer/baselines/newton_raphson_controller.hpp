@@ -54,7 +54,11 @@ class NewtonRaphsonController final : public SteeringController {
  public:
   NewtonRaphsonController(const NewtonRaphsonParameters& parameters,
                           std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "newton_raphson"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

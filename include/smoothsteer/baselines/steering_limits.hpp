@@ -61,7 +61,11 @@ class SaturatedController final : public SteeringController {
  public:
   SaturatedController(std::unique_ptr<SteeringController> inner, const SteeringLimits& limits,
                       std::string name);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return name_.c_str(); }
   //! Forwarded: the wrapped controller decides whether it has a matched-disturbance input.
