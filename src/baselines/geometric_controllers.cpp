@@ -9,14 +9,13 @@
 
 namespace smoothsteer {
 
-void StanleyParameters::validate() const {
-  const char* owner = "StanleyParameters";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(gain_per_s), owner, "gain_per_s", gain_per_s,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(softening_mps), owner, "softening_mps", softening_mps,
-                  "must be finite and > 0");
+std::optional<Violation> StanleyParameters::first_violation() const noexcept {
+  RuleChecker check("StanleyParameters");
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(gain_per_s), "gain_per_s", gain_per_s, "must be finite and > 0");
+  check.require(positive_finite(softening_mps), "softening_mps", softening_mps,
+                "must be finite and > 0");
+  return check.first();
 }
 
 StanleyController::StanleyController(const StanleyParameters& parameters,
@@ -52,16 +51,16 @@ Status StanleyController::compute_command(const ControllerInput& input,
   return Status::ok;
 }
 
-void PurePursuitParameters::validate() const {
-  const char* owner = "PurePursuitParameters";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(min_lookahead_m), owner, "min_lookahead_m",
-                  min_lookahead_m, "must be finite and > 0");
-  detail::require(std::isfinite(lookahead_time_s) && lookahead_time_s >= 0.0, owner,
-                  "lookahead_time_s", lookahead_time_s, "must be finite and >= 0");
-  detail::require(std::isfinite(max_lookahead_m) && max_lookahead_m >= min_lookahead_m, owner,
-                  "max_lookahead_m", max_lookahead_m, "must be finite and >= min_lookahead_m");
+std::optional<Violation> PurePursuitParameters::first_violation() const noexcept {
+  RuleChecker check("PurePursuitParameters");
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(min_lookahead_m), "min_lookahead_m", min_lookahead_m,
+                "must be finite and > 0");
+  check.require(std::isfinite(lookahead_time_s) && lookahead_time_s >= 0.0, "lookahead_time_s",
+                lookahead_time_s, "must be finite and >= 0");
+  check.require(std::isfinite(max_lookahead_m) && max_lookahead_m >= min_lookahead_m,
+                "max_lookahead_m", max_lookahead_m, "must be finite and >= min_lookahead_m");
+  return check.first();
 }
 
 PurePursuitController::PurePursuitController(const PurePursuitParameters& parameters,

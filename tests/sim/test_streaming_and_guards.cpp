@@ -88,7 +88,7 @@ TEST(StreamingSimulation, ObserverSeesTheSameSamplesAsTheStoredTrace) {
   EXPECT_TRUE(result.trace.empty());
   ASSERT_EQ(streamed.size(), stored.trace.size());
   for (std::size_t i = 0; i < streamed.size(); ++i) {
-    EXPECT_EQ(trace_row(streamed[i]), trace_row(stored.trace[i])) << "row " << i;
+    EXPECT_EQ(trace_values(streamed[i]), trace_values(stored.trace[i])) << "row " << i;
   }
   const auto batch = metric_values(compute_metrics(stored.trace, MetricsParameters{}));
   const auto online = metric_values(accumulator.result());

@@ -30,6 +30,7 @@
 #include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -58,8 +59,13 @@ struct MpcParameters {
   SteeringLimits limits;       //!< saturation (unconstrained) or constraints (constrained)
   MpcSolver solver = MpcSolver::unconstrained;
 
-  //! Throws std::invalid_argument "MpcParameters: <field> = <value> <rule>".
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 namespace detail {

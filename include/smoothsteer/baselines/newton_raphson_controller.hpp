@@ -24,6 +24,7 @@
 #include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -34,7 +35,13 @@ struct NewtonRaphsonParameters {
   double min_speed_mps = 0.5;  //!< below this |v| the prediction is not informative: hold
   SteeringLimits limits;       //!< clamp of u and du/dt inside the flow
 
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 //! Prediction of the rear axle over arc length `distance_m` with constant steering angle:
