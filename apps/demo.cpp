@@ -7,11 +7,13 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "smoothsteer/io/trace_csv.hpp"
 #include "smoothsteer/smoothsteer.hpp"
 
 int main(int argc, char** argv) {
@@ -37,7 +39,14 @@ int main(int argc, char** argv) {
     options.duration_s = 40.0;
     const Pose2 start{{-10.0, -40.0}, -2.5};  // 40 m right of the path, heading away from it
     const KinematicLoopResult result = run_kinematic_closed_loop(controller, start, options);
-    write_kinematic_trace_csv(result, trace_path);
+    {  // run's trace.csv columns (io/trace_csv.hpp), through a temporary file and a rename
+      io::TraceCsvWriter trace(trace_path + ".tmp");
+      for (const KinematicTraceSample& sample : result.trace) {
+        trace.write(kinematic_trace_sample(sample, result.options));
+      }
+      trace.close();
+      std::filesystem::rename(trace_path + ".tmp", trace_path);
+    }
     // The reference path beside the trace, for scripts/plot_trace.py: <trace>_path.csv.
     const std::string path_file =
         trace_path.substr(0, trace_path.size() - (trace_path.ends_with(".csv") ? 4 : 0)) +

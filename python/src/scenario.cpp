@@ -14,12 +14,13 @@
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/io/run_output.hpp"
 #include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/io/trace_csv.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 
 namespace smoothsteer::python {
 namespace {
 
-using TraceRow = std::array<double, trace_column_count>;
+using TraceRow = std::array<double, io::trace_column_count>;
 
 py::object from_json(const nlohmann::json& value) {
   const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -38,14 +39,14 @@ py::tuple run(const io::Scenario& scenario) {
     result.simulation =
         simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
                  scenario.start, *controller, [&](const TraceSample& sample) {
-                   rows.push_back(trace_row(sample));
+                   rows.push_back(io::trace_row(sample));
                    metrics.add(sample);
                  });
     result.metrics = metrics.result();
     result.controller_name = controller->name();
   }
   py::dict trace;
-  const auto& names = trace_column_names();
+  const auto& names = io::trace_column_names();
   for (std::size_t column = 0; column < names.size(); ++column) {
     py::array_t<double> values(static_cast<py::ssize_t>(rows.size()));
     auto out = values.mutable_unchecked<1>();
@@ -105,7 +106,7 @@ void bind_scenario(py::module_& m) {
   m.def(
       "trace_column_names",
       [] {
-        const auto& names = trace_column_names();
+        const auto& names = io::trace_column_names();
         return std::vector<std::string>(names.begin(), names.end());
       },
       "The columns of trace.csv, in order (docs/cli.md).");

@@ -1,15 +1,10 @@
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
-#include <string_view>
-
-#include "smoothsteer/sim/simulation.hpp"
 
 namespace smoothsteer {
 
@@ -63,12 +58,8 @@ KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, co
   return result;
 }
 
-namespace {
-
-//! A kinematic sample in the columns of the kinetic simulation's trace (trace_row()), so that
-//! the demo's trace and `smoothsteer run`'s trace.csv share one format and one plot script. The
-//! kinematic car has no actuator (delta_actual = delta_cmd, held) and no side slip.
-TraceSample as_trace_sample(const KinematicTraceSample& k, const KinematicLoopOptions& options) {
+TraceSample kinematic_trace_sample(const KinematicTraceSample& k,
+                                   const KinematicLoopOptions& options) noexcept {
   const TrackingDiagnostics& d = k.output.diagnostics;
   TraceSample s;
   s.time_s = k.time_s;
@@ -96,31 +87,23 @@ TraceSample as_trace_sample(const KinematicTraceSample& k, const KinematicLoopOp
   return s;
 }
 
-}  // namespace
-
 void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::string& file_path) {
   const std::string temporary = file_path + ".tmp";
   {
-    std::ofstream file(temporary, std::ios::binary);
+    std::ofstream file(temporary);
     if (!file) throw std::runtime_error("cannot open '" + temporary + "' for writing");
-    const char* separator = "";
-    for (const char* name : trace_column_names()) {
-      file << separator << name;
-      separator = ",";
-    }
-    file << '\n';
-    std::array<char, 32> number;
+    file.precision(9);
+    file << "t,distance,x,y,psi,delta_cmd,delta_rate,delta_acc,e,heading_error,e_front,e_lead,"
+            "psi_lead,sigma,kappa_lead,path_s\n";
     for (const KinematicTraceSample& sample : result.trace) {
-      separator = "";
-      for (const double value : trace_row(as_trace_sample(sample, result.options))) {
-        // 9 significant digits, as trace.csv (io/trace_csv.cpp).
-        const auto end = std::to_chars(number.data(), number.data() + number.size(), value,
-                                       std::chars_format::general, 9)
-                             .ptr;
-        file << separator << std::string_view(number.data(), end - number.data());
-        separator = ",";
-      }
-      file << '\n';
+      const TrackingDiagnostics& d = sample.output.diagnostics;
+      file << sample.time_s << ',' << sample.distance_m << ',' << sample.pose.position.x << ','
+           << sample.pose.position.y << ',' << sample.pose.heading_rad << ','
+           << sample.output.steering_angle_rad << ',' << sample.output.steering_rate_radps << ','
+           << sample.output.steering_acceleration_radps2 << ',' << d.lateral_error_m << ','
+           << d.heading_error_rad << ',' << d.front_lateral_error_m << ',' << d.lead_lateral_error_m
+           << ',' << d.lead_heading_error_rad << ',' << d.sliding_variable << ','
+           << d.lead_curvature << ',' << d.path_arc_length_m << '\n';
     }
     if (!file) throw std::runtime_error("failed while writing '" + temporary + "'");
   }

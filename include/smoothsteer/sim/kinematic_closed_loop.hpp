@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace smoothsteer {
@@ -47,10 +48,15 @@ struct KinematicLoopResult {
 KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, const Pose2& start,
                                               const KinematicLoopOptions& options);
 
-//! Writes the trace as CSV to `file_path` via a temporary file and rename, so that no
-//! half-written file is left behind. The columns are those of `smoothsteer run`'s trace.csv
-//! (trace_column_names(), docs/cli.md), with the ideal actuator of the kinematic loop
-//! (delta_actual = delta_cmd) and no side slip, so scripts/plot_trace.py reads both.
+//! Writes the trace as CSV (columns documented in docs/controller.md) to `file_path` via a
+//! temporary file and rename, so that no half-written file is left behind.
+//! A sample of the kinematic loop as a sample of the kinetic simulation (sim/simulation.hpp), so
+//! that it can be written as `smoothsteer run`'s trace.csv (io::TraceCsvWriter; the demo does).
+//! The kinematic car has no actuator and no tires: delta_actual* repeat delta_cmd*, side slip
+//! and vy are 0, e_measured is e, and the yaw rate is v (tan(delta) / lambda_veh + kappa_d).
+TraceSample kinematic_trace_sample(const KinematicTraceSample& sample,
+                                   const KinematicLoopOptions& options) noexcept;
+
 void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::string& file_path);
 
 }  // namespace smoothsteer
