@@ -6,10 +6,13 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "smoothsteer/sim/closed_loop_count.hpp"
+
 namespace smoothsteer {
 
 KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, const Pose2& start,
                                               const KinematicLoopOptions& options) {
+  detail::count_closed_loop();
   KinematicLoopResult result;
   result.options = options;
   KinematicSingleTrack plant{options.wheelbase_m};

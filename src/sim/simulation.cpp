@@ -8,6 +8,7 @@
 
 #include "plant_integration.hpp"
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/sim/closed_loop_count.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -109,6 +110,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           SteeringController& controller, const TraceObserver& observer) {
   parameters.validate();
   speed.validate();
+  detail::count_closed_loop();
   const VehicleParameters& car = vehicle.parameters();
   SteeringActuator actuator(actuator_parameters, parameters.substep_s);
   actuator.reset(0.0);
