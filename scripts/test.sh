@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything with warnings as errors and runs every test:
 #   1. the formatting of every C++ file against .clang-format,
-#   2. the full suite (ci preset: Release, -Werror),
+#   2. the full suite (ci preset: Release, -Werror), with the Python module and its pytest suite
+#      (python/tests) and every example (examples/, C++ and Python),
 #   3. a consumer project built against the installed package (find_package(smoothsteer)), with
 #      the core and the tuning module,
 #   4. the standard-library core alone (-DSMOOTHSTEER_CORE_ONLY=ON: no yaml-cpp, Ipopt, Eigen,

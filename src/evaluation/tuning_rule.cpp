@@ -125,8 +125,8 @@ std::vector<int> grid_shape(int budget, std::size_t axes) {
 }
 
 void TuningRuleOptions::validate() const {
-  detail::require(detail::positive_finite(divergence_m), "TuningRuleOptions", "divergence_m",
-                  divergence_m, "must be finite and > 0");
+  detail::require(positive_finite(divergence_m), "TuningRuleOptions", "divergence_m", divergence_m,
+                  "must be finite and > 0");
   for (const std::string& name : controllers) {
     const auto& known = comparison_controller_names();
     if (name != certified_controller_name &&

@@ -11,7 +11,7 @@ bool exceeds(double value, double limit, double tolerance) {
 }
 
 int count_non_finite(const TraceSample& s) {
-  const auto values = trace_row(s);
+  const auto values = trace_values(s);
   int count = 0;
   for (double v : values) count += std::isfinite(v) ? 0 : 1;
   return count;

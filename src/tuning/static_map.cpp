@@ -3,39 +3,26 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 #include "smoothsteer/tuning/invariant_bounds.hpp"
 #include "smoothsteer/tuning/worst_case.hpp"
 
 namespace smoothsteer {
-namespace {
 
-std::string describe(const char* field, double value, const char* rule) {
-  std::ostringstream message;
-  message.precision(10);
-  message << "StaticMapOptions: " << field << " = " << value << " " << rule;
-  return message.str();
-}
-
-}  // namespace
-
-void StaticMapOptions::validate() const {
-  std::string error;
-  if (!(ratio_min > 0.0 && ratio_min < 1.0)) {
-    error = describe("ratio_min", ratio_min, "must be in (0, 1)");
-  } else if (!(ratio_max > ratio_min && ratio_max < 1.0)) {
-    error = describe("ratio_max", ratio_max, "must be in (ratio_min, 1)");
-  } else if (ratio_samples < 2 || ratio_samples > 100000) {
-    error = describe("ratio_samples", ratio_samples, "must be in [2, 100000]");
-  } else if (!(max_steering_angle_rad > 0.0 && max_steering_angle_rad < 1.5)) {
-    error = describe("max_steering_angle_rad", max_steering_angle_rad,
-                     "must be in (0, 1.5) (the chain degenerates near pi/2)");
-  } else if (angle_samples < 2 || angle_samples > 100000) {
-    error = describe("angle_samples", angle_samples, "must be in [2, 100000]");
-  }
-  if (!error.empty()) throw std::invalid_argument(error);
+std::optional<Violation> StaticMapOptions::first_violation() const noexcept {
+  RuleChecker check("StaticMapOptions");
+  check.require(ratio_min > 0.0 && ratio_min < 1.0, "ratio_min", ratio_min, "must be in (0, 1)");
+  check.require(ratio_max > ratio_min && ratio_max < 1.0, "ratio_max", ratio_max,
+                "must be in (ratio_min, 1)");
+  check.require(ratio_samples >= 2 && ratio_samples <= 100000, "ratio_samples", ratio_samples,
+                "must be in [2, 100000]");
+  check.require(max_steering_angle_rad > 0.0 && max_steering_angle_rad < 1.5,
+                "max_steering_angle_rad", max_steering_angle_rad,
+                "must be in (0, 1.5) (the chain degenerates near pi/2)");
+  check.require(angle_samples >= 2 && angle_samples <= 100000, "angle_samples", angle_samples,
+                "must be in [2, 100000]");
+  return check.first();
 }
 
 StaticMap::StaticMap(const StaticMapOptions& options) : options_(options) {

@@ -15,6 +15,7 @@
 //! tests/tuning checks the table never underestimates the exact worst case.
 
 #include <vector>
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -24,7 +25,13 @@ struct StaticMapOptions {
   int ratio_samples = 97;                //!< r nodes (step 0.01 with the defaults)
   double max_steering_angle_rad = 1.45;  //!< largest tabulated dbar_veh (< pi/2)
   int angle_samples = 48;                //!< theta nodes above 0
-  void validate() const;                 //!< throws std::invalid_argument (field, value, rule)
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 struct MapValue {
