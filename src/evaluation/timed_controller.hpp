@@ -16,16 +16,6 @@ class TimedController final : public SteeringController {
  public:
   explicit TimedController(std::unique_ptr<SteeringController> inner) : inner_(std::move(inner)) {}
 
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override {
-    const auto start = std::chrono::steady_clock::now();
-    const Status status = inner_->update(input, output);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ++updates_;
-    total_s_ += seconds;
-    max_s_ = std::max(max_s_, seconds);
-    return status;
-  }
   void reset(double measured_steering_angle_rad = 0.0) noexcept override {
     inner_->reset(measured_steering_angle_rad);
   }
@@ -42,6 +32,19 @@ class TimedController final : public SteeringController {
     return updates_ > 0 ? 1e6 * total_s_ / static_cast<double>(updates_) : 0.0;
   }
   double max_us() const noexcept { return 1e6 * max_s_; }
+
+ protected:
+  //! The wrapped controller's whole update(), timed.
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override {
+    const auto start = std::chrono::steady_clock::now();
+    const Status status = inner_->update(input, output);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++updates_;
+    total_s_ += seconds;
+    max_s_ = std::max(max_s_, seconds);
+    return status;
+  }
 
  private:
   std::unique_ptr<SteeringController> inner_;
