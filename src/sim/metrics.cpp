@@ -78,6 +78,7 @@ void MetricsAccumulator::add(const TraceSample& s) {
   m_.final_abs_rear_error_m = std::abs(s.lateral_error_m);
   m_.non_finite_values += count_non_finite(s);
   m_.max_abs_rear_error_m = std::max(m_.max_abs_rear_error_m, std::abs(s.lateral_error_m));
+  rear_error_.add(s.lateral_error_m);
   m_.max_abs_front_error_m = std::max(m_.max_abs_front_error_m, std::abs(s.front_lateral_error_m));
   m_.max_abs_lead_error_m = std::max(m_.max_abs_lead_error_m, std::abs(s.lead_lateral_error_m));
 
@@ -166,6 +167,7 @@ Metrics MetricsAccumulator::result() const {
   m.held_rate_max_radps = held_rate_.max_abs;
   m.held_acceleration_rms_radps2 = held_acceleration_.rms();
   m.held_acceleration_max_radps2 = held_acceleration_.max_abs;
+  m.rms_rear_error_m = rear_error_.rms();
   return m;
 }
 
@@ -214,7 +216,8 @@ std::vector<std::pair<std::string, double>> metric_values(const Metrics& m) {
           {"actual_rate_rms_radps", m.actual_rate_rms_radps},
           {"actual_acceleration_rms_radps2", m.actual_acceleration_rms_radps2},
           {"actual_rate_violations", m.actual_rate_violations},
-          {"actual_acceleration_violations", m.actual_acceleration_violations}};
+          {"actual_acceleration_violations", m.actual_acceleration_violations},
+          {"rms_rear_error_m", m.rms_rear_error_m}};
 }
 
 }  // namespace smoothsteer

@@ -122,6 +122,18 @@ TEST(Metrics, HeldCommandRateAndAccelerationFollowTheirDefinition) {
   EXPECT_EQ(m.actual_acceleration_violations, 1);
 }
 
+TEST(Metrics, RmsRearErrorIsOverEveryRowWithTheStart) {
+  std::vector<TraceSample> trace(4);
+  const double errors[] = {1.0, -0.5, 0.0, 0.5};
+  for (std::size_t i = 0; i < trace.size(); ++i) {
+    trace[i].time_s = 0.02 * static_cast<double>(i);
+    trace[i].lateral_error_m = errors[i];
+  }
+  const Metrics m = compute_metrics(trace, MetricsParameters{});
+  EXPECT_NEAR(m.rms_rear_error_m, std::sqrt((1.0 + 0.25 + 0.0 + 0.25) / 4.0), 1e-12);
+  EXPECT_NEAR(m.max_abs_rear_error_m, 1.0, 1e-12);
+}
+
 TEST(Metrics, ReachingRestartsAfterEveryExcursion) {
   // |e_lead|: 1, 0.05, 0.05, 0.5, 0.02, 0.01 -> reached at row 4 (the last excursion is row 3).
   const double errors[] = {1.0, 0.05, 0.05, 0.5, 0.02, 0.01};
