@@ -1,5 +1,8 @@
 // update() cost of every comparison controller next to the proposed one, in ns per call, on a
 // circle of radius 40 m at 10 m/s and 50 Hz (state advanced by the kinematic model each call).
+// `certified` is the study's certified lead-wheel controller (issue 9): a ScheduledController
+// with the feedforward schedule for the shipped car's limits on this circle, behind the same
+// saturation, so that its cost and the MPC's come from one run.
 
 #include <benchmark/benchmark.h>
 
@@ -7,16 +10,32 @@
 #include <string>
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace {
+
+std::unique_ptr<smoothsteer::SaturatedController> make_controller(
+    const std::string& name, const smoothsteer::ComparisonSetup& setup) {
+  using namespace smoothsteer;
+  if (name != "certified") return make_comparison_controller(name, setup);
+  VehicleLimits car;  // the shipped passenger car: 0.4 rad/s, 8 rad/s^2
+  car.wheelbase_m = setup.wheelbase_m;
+  car.max_steering_acceleration_radps2 = 8.0;
+  TuningOptions route;
+  route.path_curvature_bound = 1.0 / 40.0;
+  route.base.cornering_target = CorneringTarget::rear_axle;
+  auto scheduled = std::make_unique<ScheduledController>(
+      compute_feedforward_schedule(car, route, speed_grid(0.5, 10.5, 0.5)), setup.path);
+  return std::make_unique<SaturatedController>(std::move(scheduled), setup.limits, name);
+}
 
 void BM_ControllerUpdate(benchmark::State& state, const std::string& name) {
   using namespace smoothsteer;
   ComparisonSetup setup;
   setup.path = std::make_shared<const Path>(Path::circle({0.0, 0.0}, 40.0));
   setup.nominal_speed_mps = 10.0;
-  auto controller = make_comparison_controller(name, setup);
+  auto controller = make_controller(name, setup);
   KinematicSingleTrack plant{setup.wheelbase_m};
   Pose2 pose{{40.5, 0.0}, 1.5707963};
   ControllerOutput output;
@@ -28,6 +47,7 @@ void BM_ControllerUpdate(benchmark::State& state, const std::string& name) {
 }
 
 const bool registered = [] {
+  benchmark::RegisterBenchmark("update/certified", BM_ControllerUpdate, std::string("certified"));
   for (const std::string& name : smoothsteer::comparison_controller_names()) {
     benchmark::RegisterBenchmark(("update/" + name).c_str(), BM_ControllerUpdate, name);
   }

@@ -16,7 +16,7 @@ VehicleLimits example_vehicle() {
 
 void BM_StaticMap(benchmark::State& state) {
   for (auto _ : state) {
-    StaticMap map;
+    const StaticMap map = StaticMap::computed();
     benchmark::DoNotOptimize(map.max_q());
   }
 }
@@ -31,6 +31,17 @@ void BM_Schedule60Speeds(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Schedule60Speeds)->Unit(benchmark::kMillisecond)->Repetitions(3);
+
+// What `smoothsteer tune --certificate box` computes for 60 speeds: the map (shipped for the
+// default options, src/tuning/static_map_table.inc) and the schedule. Issue 12 item 4: < 40 ms.
+void BM_TuneBox60Speeds(benchmark::State& state) {
+  const std::vector<double> speeds = speed_grid(0.5, 30.0, 0.5);
+  for (auto _ : state) {
+    const GainSchedule schedule = compute_gain_schedule(example_vehicle(), {}, speeds, StaticMap{});
+    benchmark::DoNotOptimize(schedule.entries().data());
+  }
+}
+BENCHMARK(BM_TuneBox60Speeds)->Unit(benchmark::kMillisecond)->Repetitions(3);
 
 void BM_ScheduleLookup(benchmark::State& state) {
   const StaticMap map;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything with warnings as errors and runs every test:
 #   1. the formatting of every C++ file against .clang-format,
-#   2. the full suite (ci preset: Release, -Werror),
+#   2. the full suite (ci preset: Release, -Werror), with the Python module and its pytest suite
+#      (python/tests) and every example (examples/, C++ and Python),
 #   3. a consumer project built against the installed package (find_package(smoothsteer)), with
 #      the core and the tuning module,
 #   4. the standard-library core alone (-DSMOOTHSTEER_CORE_ONLY=ON: no yaml-cpp, Ipopt, Eigen,
@@ -21,7 +22,13 @@ echo "formatting: 1 passed, 0 failed"
 
 cmake --preset ci
 cmake --build --preset ci -j"$jobs"
-ctest --preset ci -j"$jobs"
+# Every test process appends how many closed loops it ran (tests/support/closed_loop_report.cpp)
+# to SMOOTHSTEER_LOOP_COUNT_FILE (.ci/run sets it to add its own pass; else a temporary file).
+loop_counts="${SMOOTHSTEER_LOOP_COUNT_FILE:-$(mktemp)}"
+SMOOTHSTEER_LOOP_COUNT_FILE="$loop_counts" ctest --preset ci -j"$jobs"
+echo "closed loops run by the suite: $(awk '{n += $1} END {print n + 0}' "$loop_counts")" \
+  "(SMOOTHSTEER_PROPERTY_CASES=${SMOOTHSTEER_PROPERTY_CASES:-default})"
+[[ -n "${SMOOTHSTEER_LOOP_COUNT_FILE:-}" ]] || rm -f "$loop_counts"
 
 prefix="$(mktemp -d)"
 trap 'rm -rf "$prefix"' EXIT
@@ -41,6 +48,6 @@ if [[ "${SMOOTHSTEER_SKIP_ASAN:-0}" != "1" ]]; then
   cmake --build --preset asan -j"$jobs"
   # The sanitizers run the suite at the default case count: they look for memory errors and
   # undefined behaviour, not for rare inputs.
-  SMOOTHSTEER_PROPERTY_CASES= ctest --preset asan -j"$jobs"
+  SMOOTHSTEER_PROPERTY_CASES= SMOOTHSTEER_LOOP_COUNT_FILE= ctest --preset asan -j"$jobs"
   bash scripts/fuzz.sh
 fi

@@ -7,13 +7,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
+
+#include "smoothsteer/path/path.hpp"
 
 extern char** environ;
 
@@ -48,6 +53,21 @@ std::string find_plot_script() {
   }
   throw std::runtime_error("--plot: plot_trace.py not found (looked at " + tried +
                            "); set SMOOTHSTEER_PLOT_SCRIPT");
+}
+
+void write_path_csv(const Path& path, const std::string& file) {
+  constexpr double spacing_m = 0.25;
+  constexpr double max_rows = 20000.0;
+  const double intervals = std::clamp(std::ceil(path.length() / spacing_m), 1.0, max_rows - 1.0);
+  std::ofstream out(file, std::ios::binary);
+  out.precision(9);
+  out << "x,y\n";
+  for (double i = 0.0; i <= intervals; i += 1.0) {
+    const PathPoint point = path.evaluate(path.length() * i / intervals);
+    out << point.position.x << ',' << point.position.y << '\n';
+  }
+  out.flush();
+  if (!out) throw std::runtime_error("--plot: writing " + file + " failed");
 }
 
 void run_plotter(const std::string& script, const std::string& csv, const std::string& png) {

@@ -3,7 +3,15 @@
 
 #include <string>
 
+namespace smoothsteer {
+class Path;
+}
+
 namespace smoothsteer::cli {
+
+//! Writes the reference path as "x,y" rows (every 0.25 m, at most 20 000 rows) for the plot
+//! script, which draws the path itself rather than the closest points of the trace.
+void write_path_csv(const Path& path, const std::string& file);
 
 //! The plot script: $SMOOTHSTEER_PLOT_SCRIPT if set, else the first existing of
 //! <executable dir>/../share/smoothsteer/plot_trace.py (installed layout),

@@ -59,12 +59,13 @@ void run(const RunOptions& options) {
   }
   const bool ok = result.simulation.status == Status::ok && !result.simulation.non_finite;
   if (options.plot && ok) {
+    write_path_csv(*scenario.path, out.file("path.csv").string());
     run_plotter(script, out.file("trace.csv").string(), out.file("trace.png").string());
   }
   // Published even when the run stopped early: the trace shows where and why.
   out.commit();
   std::printf("wrote %s/trace.csv and summary.json%s\n", out.target().c_str(),
-              options.plot && ok ? " and trace.png" : "");
+              options.plot && ok ? ", path.csv and trace.png" : "");
   if (!ok) {
     throw std::runtime_error("run stopped early: " + result.simulation.stop_reason);
   }
@@ -139,8 +140,9 @@ void add_run_commands(CLI::App& app) {
   run_command->add_option("scenario", run_options->scenario, "scenario YAML file")->required();
   run_command->add_option("--out", run_options->out, "output directory")->required();
   run_command->add_option("--set", run_options->overrides, "override: key.path=value (repeatable)");
-  run_command->add_flag("--plot", run_options->plot,
-                        "also write DIR/trace.png (scripts/plot_trace.py)");
+  run_command->add_flag(
+      "--plot", run_options->plot,
+      "also write DIR/trace.png and the reference path DIR/path.csv (scripts/plot_trace.py)");
   run_command->callback([run_options] { run(*run_options); });
 
   auto directory = std::make_shared<std::string>(default_scenario_directory());

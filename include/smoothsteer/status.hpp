@@ -6,7 +6,7 @@ namespace smoothsteer {
 
 enum class Status {
   ok = 0,                //!< output is valid
-  invalid_input = -1,    //!< NaN/inf pose, speed or period, or a non-positive period
+  invalid_input = -1,    //!< NaN/inf or out of ControllerInputRange, or a non-positive period
   not_configured = -2,   //!< the controller has no path
   numerical_error = -3,  //!< an internal value became non-finite; the state was reset
   unsupported = -4,      //!< the controller does not implement this call

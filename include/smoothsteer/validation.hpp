@@ -6,6 +6,7 @@
 //!   bool is_valid() const noexcept;          // real-time use: no allocation, no throw
 //!   std::string validation_error() const;     // "" when valid, else the message
 //!   void validate() const;                    // throws std::invalid_argument(message)
+//! (the three written inline on first_violation(), which checks its rules with RuleChecker).
 //! The message is always "<Struct>: <field> = <value> <rule>", values printed exactly
 //! (shortest round-trip form: 0.0200001 stays 0.0200001).
 
@@ -51,6 +52,34 @@ inline std::string describe(const std::optional<Violation>& v) {
 
 inline void throw_if_violated(const std::optional<Violation>& v) {
   if (v) throw std::invalid_argument(describe(*v));
+}
+
+//! The shared helper behind every first_violation(): checks the rules in order and keeps the
+//! first one broken. noexcept and allocation free, so is_valid() can run in real time.
+class RuleChecker {
+ public:
+  explicit RuleChecker(const char* owner) noexcept : owner_(owner) {}
+  //! Records "<field> = <value> <rule>[ <reference>]" unless `ok` or a rule failed before.
+  void require(bool ok, const char* field, double value, const char* rule,
+               double reference = std::numeric_limits<double>::quiet_NaN()) noexcept {
+    if (!ok && !first_) first_ = Violation{owner_, "", field, value, rule, reference};
+  }
+  //! A nested struct's first violation, with its own owner.
+  void include(const std::optional<Violation>& nested) noexcept {
+    if (nested && !first_) first_ = nested;
+  }
+  const std::optional<Violation>& first() const noexcept { return first_; }
+
+ private:
+  const char* owner_;
+  std::optional<Violation> first_;
+};
+
+inline bool positive_finite(double value) noexcept {
+  return std::isfinite(value) && value > 0.0;
+}
+inline bool non_negative_finite(double value) noexcept {
+  return std::isfinite(value) && value >= 0.0;
 }
 
 }  // namespace smoothsteer

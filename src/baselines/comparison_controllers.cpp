@@ -10,19 +10,33 @@
 
 namespace smoothsteer {
 
+std::optional<Violation> ComparisonSetup::first_violation() const noexcept {
+  RuleChecker check("ComparisonSetup");
+  // Upper bounds: beyond them the bisection of proposed_parameters and the baselines' gains
+  // overflow (issue 12, defect 2: wheelbase_m = 1e308 was accepted).
+  check.require(positive_finite(wheelbase_m) && wheelbase_m <= max_wheelbase_m, "wheelbase_m",
+                wheelbase_m, "must be in (0, 1000]");
+  check.require(positive_finite(nominal_speed_mps) &&
+                    nominal_speed_mps <= ControllerInputRange::max_abs_speed_mps,
+                "nominal_speed_mps", nominal_speed_mps, "must be in (0, 1000]");
+  check.include(limits.first_violation());
+  check.require(std::isfinite(k_rob) && k_rob >= 0.0 && k_rob < 1.0, "k_rob", k_rob,
+                "must be in [0, 1)");
+  check.require(positive_finite(lead_wheelbase_m) && lead_wheelbase_m < wheelbase_m,
+                "lead_wheelbase_m", lead_wheelbase_m,
+                "must be in (0, wheelbase_m) (eq. cornering_constr)");
+  return check.first();
+}
+
+std::string ComparisonSetup::validation_error() const {
+  if (!path) return "ComparisonSetup: path is null; a path is required";
+  return describe(first_violation());
+}
+
 void ComparisonSetup::validate() const {
-  const char* owner = "ComparisonSetup";
-  if (!path) throw std::invalid_argument("ComparisonSetup: path is null; a path is required");
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(nominal_speed_mps), owner, "nominal_speed_mps",
-                  nominal_speed_mps, "must be finite and > 0");
-  limits.validate();
-  detail::require(std::isfinite(k_rob) && k_rob >= 0.0 && k_rob < 1.0, owner, "k_rob", k_rob,
-                  "must be in [0, 1)");
-  detail::require(detail::positive_finite(lead_wheelbase_m) && lead_wheelbase_m < wheelbase_m,
-                  owner, "lead_wheelbase_m", lead_wheelbase_m,
-                  "must be in (0, wheelbase_m) (eq. cornering_constr)");
+  if (const std::string error = validation_error(); !error.empty()) {
+    throw std::invalid_argument(error);
+  }
 }
 
 const std::vector<std::string>& comparison_controller_names() {

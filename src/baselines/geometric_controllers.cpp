@@ -9,14 +9,13 @@
 
 namespace smoothsteer {
 
-void StanleyParameters::validate() const {
-  const char* owner = "StanleyParameters";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(gain_per_s), owner, "gain_per_s", gain_per_s,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(softening_mps), owner, "softening_mps", softening_mps,
-                  "must be finite and > 0");
+std::optional<Violation> StanleyParameters::first_violation() const noexcept {
+  RuleChecker check("StanleyParameters");
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(gain_per_s), "gain_per_s", gain_per_s, "must be finite and > 0");
+  check.require(positive_finite(softening_mps), "softening_mps", softening_mps,
+                "must be finite and > 0");
+  return check.first();
 }
 
 StanleyController::StanleyController(const StanleyParameters& parameters,
@@ -31,7 +30,8 @@ void StanleyController::reset(double measured_steering_angle_rad) noexcept {
   detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
 }
 
-Status StanleyController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status StanleyController::compute_command(const ControllerInput& input,
+                                          ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const Vec2 front_axle =
@@ -51,16 +51,16 @@ Status StanleyController::update(const ControllerInput& input, ControllerOutput&
   return Status::ok;
 }
 
-void PurePursuitParameters::validate() const {
-  const char* owner = "PurePursuitParameters";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(min_lookahead_m), owner, "min_lookahead_m",
-                  min_lookahead_m, "must be finite and > 0");
-  detail::require(std::isfinite(lookahead_time_s) && lookahead_time_s >= 0.0, owner,
-                  "lookahead_time_s", lookahead_time_s, "must be finite and >= 0");
-  detail::require(std::isfinite(max_lookahead_m) && max_lookahead_m >= min_lookahead_m, owner,
-                  "max_lookahead_m", max_lookahead_m, "must be finite and >= min_lookahead_m");
+std::optional<Violation> PurePursuitParameters::first_violation() const noexcept {
+  RuleChecker check("PurePursuitParameters");
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(min_lookahead_m), "min_lookahead_m", min_lookahead_m,
+                "must be finite and > 0");
+  check.require(std::isfinite(lookahead_time_s) && lookahead_time_s >= 0.0, "lookahead_time_s",
+                lookahead_time_s, "must be finite and >= 0");
+  check.require(std::isfinite(max_lookahead_m) && max_lookahead_m >= min_lookahead_m,
+                "max_lookahead_m", max_lookahead_m, "must be finite and >= min_lookahead_m");
+  return check.first();
 }
 
 PurePursuitController::PurePursuitController(const PurePursuitParameters& parameters,
@@ -83,8 +83,8 @@ double PurePursuitController::lookahead_m(double speed_mps) const noexcept {
       parameters_.min_lookahead_m, parameters_.max_lookahead_m);
 }
 
-Status PurePursuitController::update(const ControllerInput& input,
-                                     ControllerOutput& output) noexcept {
+Status PurePursuitController::compute_command(const ControllerInput& input,
+                                              ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double previous = steering_;

@@ -16,20 +16,21 @@ double HosmParameters::alpha() const noexcept {
   return lower_g * steering_rate_bound_per_m - upper_f;
 }
 
-void HosmParameters::validate() const {
-  const char* owner = "HosmParameters";
-  detail::require_x_ext_limits(owner, wheelbase_m, steering_angle_bound_rad,
+std::optional<Violation> HosmParameters::first_violation() const noexcept {
+  RuleChecker check("HosmParameters");
+  detail::require_x_ext_limits(check, wheelbase_m, steering_angle_bound_rad,
                                steering_rate_bound_per_m);
-  detail::require(detail::positive_finite(heading_bound_rad) && heading_bound_rad < pi / 2.0, owner,
-                  "heading_bound_rad", heading_bound_rad,
-                  "must be in (0, pi/2) so that G = cos(psi_bar)/lambda > 0");
-  detail::require(alpha() > 0.0, owner, "heading_bound_rad", heading_bound_rad,
-                  "gives alpha = G delta_bar' - F = " + std::to_string(alpha()) +
-                      " <= 0: lower psi_bar or delta_bar, or raise delta_bar'");
-  detail::require(detail::positive_finite(substep_m), owner, "substep_m", substep_m,
-                  "must be finite and > 0");
-  detail::require(max_substeps >= 1 && max_substeps <= 10000, owner, "max_substeps", max_substeps,
-                  "must be in [1, 10000]");
+  check.require(positive_finite(heading_bound_rad) && heading_bound_rad < pi / 2.0,
+                "heading_bound_rad", heading_bound_rad,
+                "must be in (0, pi/2) so that G = cos(psi_bar)/lambda > 0");
+  check.require(alpha() > 0.0, "heading_bound_rad", heading_bound_rad,
+                "gives alpha = G delta_bar' - F <= 0 (lower psi_bar or delta_bar, or raise "
+                "delta_bar'): alpha =",
+                alpha());
+  check.require(positive_finite(substep_m), "substep_m", substep_m, "must be finite and > 0");
+  check.require(max_substeps >= 1 && max_substeps <= 10000, "max_substeps", max_substeps,
+                "must be in [1, 10000]");
+  return check.first();
 }
 
 HosmController::HosmController(const HosmParameters& parameters, std::shared_ptr<const Path> path)
@@ -68,7 +69,8 @@ double HosmController::steering_rate_per_meter(double lateral_error_m, double he
   return rate;
 }
 
-Status HosmController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status HosmController::compute_command(const ControllerInput& input,
+                                       ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   // Forward driving only: in reverse (or at rest) the command is held.

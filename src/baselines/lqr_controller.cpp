@@ -8,18 +8,18 @@
 
 namespace smoothsteer {
 
-void LqrParameters::validate() const {
-  const char* owner = "LqrParameters";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(weight_lateral), owner, "weight_lateral", weight_lateral,
-                  "must be finite and > 0 (else e is not stabilised)");
-  detail::require(std::isfinite(weight_heading) && weight_heading >= 0.0, owner, "weight_heading",
-                  weight_heading, "must be finite and >= 0");
-  detail::require(detail::positive_finite(weight_steering), owner, "weight_steering",
-                  weight_steering, "must be finite and > 0");
-  detail::require(detail::positive_finite(min_speed_mps), owner, "min_speed_mps", min_speed_mps,
-                  "must be finite and > 0");
+std::optional<Violation> LqrParameters::first_violation() const noexcept {
+  RuleChecker check("LqrParameters");
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(weight_lateral), "weight_lateral", weight_lateral,
+                "must be finite and > 0 (else e is not stabilised)");
+  check.require(std::isfinite(weight_heading) && weight_heading >= 0.0, "weight_heading",
+                weight_heading, "must be finite and >= 0");
+  check.require(positive_finite(weight_steering), "weight_steering", weight_steering,
+                "must be finite and > 0");
+  check.require(positive_finite(min_speed_mps), "min_speed_mps", min_speed_mps,
+                "must be finite and > 0");
+  return check.first();
 }
 
 LqrGains lqr_gains(const LqrParameters& parameters, double speed_mps) noexcept {
@@ -44,7 +44,8 @@ void LqrController::reset(double measured_steering_angle_rad) noexcept {
   detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
 }
 
-Status LqrController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status LqrController::compute_command(const ControllerInput& input,
+                                      ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double previous = steering_;

@@ -11,47 +11,44 @@
 
 namespace smoothsteer {
 
-void MpcParameters::validate() const {
-  const char* owner = "MpcParameters";
-  using detail::positive_finite;
-  using detail::require;
-  const auto non_negative = [](double value) { return std::isfinite(value) && value >= 0.0; };
-  require(positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-          "must be finite and > 0");
-  require(positive_finite(steering_time_constant_s), owner, "steering_time_constant_s",
-          steering_time_constant_s, "must be finite and > 0");
-  require(horizon_steps >= 2 && horizon_steps <= 200, owner, "horizon_steps", horizon_steps,
-          "must be in [2, 200]");
-  require(positive_finite(prediction_step_s), owner, "prediction_step_s", prediction_step_s,
-          "must be finite and > 0");
-  require(non_negative(weight_lateral_error), owner, "weight_lateral_error", weight_lateral_error,
-          "must be finite and >= 0");
-  require(non_negative(weight_heading_error), owner, "weight_heading_error", weight_heading_error,
-          "must be finite and >= 0");
-  require(non_negative(weight_heading_error_squared_speed), owner,
-          "weight_heading_error_squared_speed", weight_heading_error_squared_speed,
-          "must be finite and >= 0");
+std::optional<Violation> MpcParameters::first_violation() const noexcept {
+  RuleChecker check("MpcParameters");
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(steering_time_constant_s), "steering_time_constant_s",
+                steering_time_constant_s, "must be finite and > 0");
+  check.require(horizon_steps >= 2 && horizon_steps <= 200, "horizon_steps", horizon_steps,
+                "must be in [2, 200]");
+  check.require(positive_finite(prediction_step_s), "prediction_step_s", prediction_step_s,
+                "must be finite and > 0");
+  check.require(non_negative_finite(weight_lateral_error), "weight_lateral_error",
+                weight_lateral_error, "must be finite and >= 0");
+  check.require(non_negative_finite(weight_heading_error), "weight_heading_error",
+                weight_heading_error, "must be finite and >= 0");
+  check.require(non_negative_finite(weight_heading_error_squared_speed),
+                "weight_heading_error_squared_speed", weight_heading_error_squared_speed,
+                "must be finite and >= 0");
   // r > 0 keeps G'G positive definite whatever the other weights.
-  require(positive_finite(weight_steering_input), owner, "weight_steering_input",
-          weight_steering_input, "must be finite and > 0 (keeps the QP strictly convex)");
-  require(non_negative(weight_steering_input_squared_speed), owner,
-          "weight_steering_input_squared_speed", weight_steering_input_squared_speed,
-          "must be finite and >= 0");
-  require(non_negative(weight_steering_rate), owner, "weight_steering_rate", weight_steering_rate,
-          "must be finite and >= 0");
-  require(non_negative(weight_steering_acceleration), owner, "weight_steering_acceleration",
-          weight_steering_acceleration, "must be finite and >= 0");
-  require(non_negative(weight_terminal_lateral_error), owner, "weight_terminal_lateral_error",
-          weight_terminal_lateral_error, "must be finite and >= 0");
-  require(non_negative(weight_terminal_heading_error), owner, "weight_terminal_heading_error",
-          weight_terminal_heading_error, "must be finite and >= 0");
-  require(non_negative(zero_feedforward_angle_rad), owner, "zero_feedforward_angle_rad",
-          zero_feedforward_angle_rad, "must be finite and >= 0");
-  require(positive_finite(min_speed_mps), owner, "min_speed_mps", min_speed_mps,
-          "must be finite and > 0");
-  limits.validate();
-  require(limits.angle_rad < pi / 2.0, owner, "limits.angle_rad", limits.angle_rad,
-          "must be < pi/2 (tan delta of the model)");
+  check.require(positive_finite(weight_steering_input), "weight_steering_input",
+                weight_steering_input, "must be finite and > 0 (keeps the QP strictly convex)");
+  check.require(non_negative_finite(weight_steering_input_squared_speed),
+                "weight_steering_input_squared_speed", weight_steering_input_squared_speed,
+                "must be finite and >= 0");
+  check.require(non_negative_finite(weight_steering_rate), "weight_steering_rate",
+                weight_steering_rate, "must be finite and >= 0");
+  check.require(non_negative_finite(weight_steering_acceleration), "weight_steering_acceleration",
+                weight_steering_acceleration, "must be finite and >= 0");
+  check.require(non_negative_finite(weight_terminal_lateral_error), "weight_terminal_lateral_error",
+                weight_terminal_lateral_error, "must be finite and >= 0");
+  check.require(non_negative_finite(weight_terminal_heading_error), "weight_terminal_heading_error",
+                weight_terminal_heading_error, "must be finite and >= 0");
+  check.require(non_negative_finite(zero_feedforward_angle_rad), "zero_feedforward_angle_rad",
+                zero_feedforward_angle_rad, "must be finite and >= 0");
+  check.require(positive_finite(min_speed_mps), "min_speed_mps", min_speed_mps,
+                "must be finite and > 0");
+  check.include(limits.first_violation());
+  check.require(limits.angle_rad < pi / 2.0, "limits.angle_rad", limits.angle_rad,
+                "must be < pi/2 (tan delta of the model)");
+  return check.first();
 }
 
 namespace detail {
@@ -97,7 +94,8 @@ void MpcController::reset(double measured_steering_angle_rad) noexcept {
   first_update_ = true;
 }
 
-Status MpcController::update(const ControllerInput& input, ControllerOutput& output) noexcept {
+Status MpcController::compute_command(const ControllerInput& input,
+                                      ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double period = input.period_s;

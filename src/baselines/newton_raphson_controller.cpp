@@ -8,17 +8,15 @@
 
 namespace smoothsteer {
 
-void NewtonRaphsonParameters::validate() const {
-  const char* owner = "NewtonRaphsonParameters";
-  detail::require(detail::positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(horizon_s), owner, "horizon_s", horizon_s,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(gain_per_s), owner, "gain_per_s", gain_per_s,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(min_speed_mps), owner, "min_speed_mps", min_speed_mps,
-                  "must be finite and > 0");
-  limits.validate();
+std::optional<Violation> NewtonRaphsonParameters::first_violation() const noexcept {
+  RuleChecker check("NewtonRaphsonParameters");
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(horizon_s), "horizon_s", horizon_s, "must be finite and > 0");
+  check.require(positive_finite(gain_per_s), "gain_per_s", gain_per_s, "must be finite and > 0");
+  check.require(positive_finite(min_speed_mps), "min_speed_mps", min_speed_mps,
+                "must be finite and > 0");
+  check.include(limits.first_violation());
+  return check.first();
 }
 
 ArcPrediction predict_arc(double steering_angle_rad, double wheelbase_m,
@@ -67,8 +65,8 @@ void NewtonRaphsonController::reset(double measured_steering_angle_rad) noexcept
   rate_ = 0.0;
 }
 
-Status NewtonRaphsonController::update(const ControllerInput& input,
-                                       ControllerOutput& output) noexcept {
+Status NewtonRaphsonController::compute_command(const ControllerInput& input,
+                                                ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   const detail::RearTracking rear = detail::track_rear_axle(*path_, rear_hint_, input);
   const double speed = input.speed_mps;

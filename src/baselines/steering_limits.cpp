@@ -9,11 +9,12 @@
 
 namespace smoothsteer {
 
-void SteeringLimits::validate() const {
-  detail::require(detail::positive_finite(angle_rad) && angle_rad < std::numbers::pi / 2.0,
-                  "SteeringLimits", "angle_rad", angle_rad, "must be in (0, pi/2)");
-  detail::require(detail::positive_finite(rate_radps), "SteeringLimits", "rate_radps", rate_radps,
-                  "must be finite and > 0");
+std::optional<Violation> SteeringLimits::first_violation() const noexcept {
+  RuleChecker check("SteeringLimits");
+  check.require(positive_finite(angle_rad) && angle_rad < std::numbers::pi / 2.0, "angle_rad",
+                angle_rad, "must be in (0, pi/2)");
+  check.require(positive_finite(rate_radps), "rate_radps", rate_radps, "must be finite and > 0");
+  return check.first();
 }
 
 double SaturationStatistics::limited_fraction() const noexcept {
@@ -72,8 +73,8 @@ void SaturatedController::reset(double measured_steering_angle_rad) noexcept {
   first_ = true;
 }
 
-Status SaturatedController::update(const ControllerInput& input,
-                                   ControllerOutput& output) noexcept {
+Status SaturatedController::compute_command(const ControllerInput& input,
+                                            ControllerOutput& output) noexcept {
   if (!detail::valid_input(input)) return Status::invalid_input;
   ControllerOutput raw = output;
   const Status status = inner_->update(input, raw);

@@ -1,20 +1,18 @@
 #include "smoothsteer/controller/controller_parameters.hpp"
 
 #include "smoothsteer/controller/steering_certificate.hpp"
+#include "smoothsteer/validation.hpp"
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 namespace smoothsteer {
 namespace {
 
 std::string describe(const std::string& field, double value, const std::string& rule) {
-  std::ostringstream message;
-  message.precision(10);
-  message << "ControllerParameters: " << field << " = " << value << " " << rule;
-  return message.str();
+  return smoothsteer::describe(
+      Violation{"ControllerParameters", "", field.c_str(), value, rule.c_str()});
 }
 
 std::string wheelbase_name(int index) {

@@ -9,21 +9,15 @@
 #include <utility>
 
 namespace smoothsteer {
-namespace {
-
-void require_positive(const char* field, double value) {
-  if (!std::isfinite(value) || !(value > 0.0)) {
-    throw std::invalid_argument(std::string("CuspSpeedOptions: ") + field + " = " +
-                                std::to_string(value) + " must be finite and > 0");
-  }
-}
-
-}  // namespace
-
-void CuspSpeedOptions::validate() const {
-  require_positive("cruise_speed_mps", cruise_speed_mps);
-  require_positive("deceleration_mps2", deceleration_mps2);
-  require_positive("stop_tolerance_m", stop_tolerance_m);
+std::optional<Violation> CuspSpeedOptions::first_violation() const noexcept {
+  RuleChecker check("CuspSpeedOptions");
+  check.require(positive_finite(cruise_speed_mps), "cruise_speed_mps", cruise_speed_mps,
+                "must be finite and > 0");
+  check.require(positive_finite(deceleration_mps2), "deceleration_mps2", deceleration_mps2,
+                "must be finite and > 0");
+  check.require(positive_finite(stop_tolerance_m), "stop_tolerance_m", stop_tolerance_m,
+                "must be finite and > 0");
+  return check.first();
 }
 
 CuspSequencer::CuspSequencer(PathPlan plan, SteeringController& controller,

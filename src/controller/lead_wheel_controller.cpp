@@ -274,8 +274,8 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
   return pose;
 }
 
-Status LeadWheelController::update(const ControllerInput& input,
-                                   ControllerOutput& output) noexcept {
+Status LeadWheelController::compute_command(const ControllerInput& input,
+                                            ControllerOutput& output) noexcept {
   if (!valid_input(input)) return Status::invalid_input;
   const int n = parameters_.order;
   const double* wheelbases = parameters_.wheelbases_m.data();

@@ -14,29 +14,28 @@
 
 namespace smoothsteer {
 
-void ReachingProblem::validate() const {
-  const char* owner = "ReachingProblem";
-  detail::require_x_ext_limits(owner, wheelbase_m, steering_angle_bound_rad,
+std::optional<Violation> ReachingProblem::first_violation() const noexcept {
+  RuleChecker check("ReachingProblem");
+  detail::require_x_ext_limits(check, wheelbase_m, steering_angle_bound_rad,
                                steering_rate_bound_per_m);
-  detail::require(std::isfinite(initial_lateral_error_m), owner, "initial_lateral_error_m",
-                  initial_lateral_error_m, "must be finite");
-  detail::require(std::isfinite(initial_heading_rad) && std::abs(initial_heading_rad) < pi / 2.0,
-                  owner, "initial_heading_rad", initial_heading_rad,
-                  "must be in (-pi/2, pi/2) (the approach is towards the path)");
-  detail::require(std::abs(initial_steering_rad) <= steering_angle_bound_rad, owner,
-                  "initial_steering_rad", initial_steering_rad,
-                  "must satisfy C1: |delta(0)| <= steering_angle_bound_rad");
-  detail::require(std::isfinite(terminal_lateral_tolerance_m) && terminal_lateral_tolerance_m >= 0,
-                  owner, "terminal_lateral_tolerance_m", terminal_lateral_tolerance_m,
-                  "must be finite and >= 0");
-  detail::require(
-      std::isfinite(terminal_heading_tolerance_rad) && terminal_heading_tolerance_rad >= 0, owner,
+  check.require(std::isfinite(initial_lateral_error_m), "initial_lateral_error_m",
+                initial_lateral_error_m, "must be finite");
+  check.require(std::isfinite(initial_heading_rad) && std::abs(initial_heading_rad) < pi / 2.0,
+                "initial_heading_rad", initial_heading_rad,
+                "must be in (-pi/2, pi/2) (the approach is towards the path)");
+  check.require(std::abs(initial_steering_rad) <= steering_angle_bound_rad, "initial_steering_rad",
+                initial_steering_rad, "must satisfy C1: |delta(0)| <= steering_angle_bound_rad");
+  check.require(std::isfinite(terminal_lateral_tolerance_m) && terminal_lateral_tolerance_m >= 0,
+                "terminal_lateral_tolerance_m", terminal_lateral_tolerance_m,
+                "must be finite and >= 0");
+  check.require(
+      std::isfinite(terminal_heading_tolerance_rad) && terminal_heading_tolerance_rad >= 0,
       "terminal_heading_tolerance_rad", terminal_heading_tolerance_rad, "must be finite and >= 0");
-  detail::require(intervals >= 10 && intervals <= 5000, owner, "intervals", intervals,
-                  "must be in [10, 5000]");
-  detail::require(max_iterations >= 1, owner, "max_iterations", max_iterations, "must be >= 1");
-  detail::require(detail::positive_finite(tolerance), owner, "tolerance", tolerance,
-                  "must be finite and > 0");
+  check.require(intervals >= 10 && intervals <= 5000, "intervals", intervals,
+                "must be in [10, 5000]");
+  check.require(max_iterations >= 1, "max_iterations", max_iterations, "must be >= 1");
+  check.require(positive_finite(tolerance), "tolerance", tolerance, "must be finite and > 0");
+  return check.first();
 }
 
 namespace {

@@ -12,20 +12,17 @@
 
 namespace smoothsteer {
 
-void ReachingBenchmarkOptions::validate() const {
-  const char* owner = "ReachingBenchmarkOptions";
-  detail::require(detail::positive_finite(lateral_tolerance_m), owner, "lateral_tolerance_m",
-                  lateral_tolerance_m, "must be finite and > 0");
-  detail::require(detail::positive_finite(heading_tolerance_rad), owner, "heading_tolerance_rad",
-                  heading_tolerance_rad, "must be finite and > 0");
-  detail::require(detail::positive_finite(speed_mps), owner, "speed_mps", speed_mps,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(period_s), owner, "period_s", period_s,
-                  "must be finite and > 0");
-  detail::require(detail::positive_finite(horizon_m), owner, "horizon_m", horizon_m,
-                  "must be finite and > 0");
-  detail::require(!initial_headings_rad.empty(), owner, "initial_headings_rad.size()", 0.0,
-                  "must be >= 1");
+std::optional<Violation> ReachingBenchmarkOptions::first_violation() const noexcept {
+  RuleChecker check("ReachingBenchmarkOptions");
+  check.require(positive_finite(lateral_tolerance_m), "lateral_tolerance_m", lateral_tolerance_m,
+                "must be finite and > 0");
+  check.require(positive_finite(heading_tolerance_rad), "heading_tolerance_rad",
+                heading_tolerance_rad, "must be finite and > 0");
+  check.require(positive_finite(speed_mps), "speed_mps", speed_mps, "must be finite and > 0");
+  check.require(positive_finite(period_s), "period_s", period_s, "must be finite and > 0");
+  check.require(positive_finite(horizon_m), "horizon_m", horizon_m, "must be finite and > 0");
+  check.require(!initial_headings_rad.empty(), "initial_headings_rad.size()", 0.0, "must be >= 1");
+  return check.first();
 }
 
 double reaching_distance(const KinematicLoopResult& result, double lateral_tolerance_m,

@@ -9,54 +9,63 @@
 
 namespace smoothsteer {
 
+namespace {
+
+//! The held-command columns of the lane-change table (docs/metrics.md): what the actuator
+//! receives, by differences over the control period, whatever derivative a controller reports.
+std::vector<std::string> held_columns(const Metrics& m) {
+  const long above = static_cast<long>(m.angle_violations) + m.held_rate_violations +
+                     m.held_acceleration_violations;
+  return {ResultsTable::number(m.max_abs_rear_error_m), ResultsTable::number(m.held_rate_rms_radps),
+          ResultsTable::number(m.held_rate_max_radps),
+          ResultsTable::number(m.held_acceleration_max_radps2, 2), std::to_string(above)};
+}
+
+}  // namespace
+
 ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files,
                                         const PaperFigures& paper) {
   ResultsTable table;
   table.title = "Lane change (Falcone et al. 2007) on the kinetic model with actuator";
-  table.header = {"speed_mps",         "controller",       "max_abs_e_m",
-                  "std_rate_radps",    "max_accel_radps2", "angle_hits",
-                  "rate_hits",         "limited_fraction", "max_rate_excess_radps",
-                  "max_side_slip_rad", "paper_max_e_m"};
+  table.header = {"speed_mps",           "controller",          "max_abs_e_m",
+                  "held_rate_rms_radps", "held_rate_max_radps", "held_accel_max_radps2",
+                  "held_above_limits",   "clamped_updates",     "max_side_slip_rad",
+                  "paper_max_e_m"};
+  const auto add_row = [&](double speed, const std::string& name, const Metrics& m,
+                           const std::string& clamped, const std::string& paper_figure) {
+    std::vector<std::string> row{ResultsTable::number(speed, 1), name};
+    for (std::string& cell : held_columns(m)) row.push_back(std::move(cell));
+    row.push_back(clamped);
+    row.push_back(ResultsTable::number(m.max_abs_side_slip_rad));
+    row.push_back(paper_figure);
+    table.rows.push_back(std::move(row));
+  };
   for (const std::string& file : scenario_files) {
     const io::Scenario scenario = io::load_scenario(file);
     const double speed = scenario.speed.initial_speed_mps;
     const std::string speed_key = ResultsTable::number(speed, 1);
-    // The scenario's own controller is the proposed one (lead_wheel, paper parameters).
-    {
-      const io::RunResult run = io::run_scenario(scenario);
-      const Metrics& m = run.metrics;
-      table.rows.push_back({ResultsTable::number(speed, 1), "proposed (scenario)",
-                            ResultsTable::number(m.max_abs_rear_error_m),
-                            ResultsTable::number(m.command_rate_std_radps),
-                            ResultsTable::number(m.command_acceleration_max_radps2, 2),
-                            std::to_string(m.angle_violations), std::to_string(m.rate_violations),
-                            "", "", ResultsTable::number(m.max_abs_side_slip_rad),
-                            paper.text("lane_change", speed_key, "proposed_max_e_m", 3)});
-    }
+    // The scenario's own controller: the certified lead-wheel controller of its schedule.
+    add_row(speed, "scenario (" + scenario.controller["type"].as<std::string>() + ")",
+            io::run_scenario(scenario).metrics, "",
+            paper.text("lane_change", speed_key, "proposed_max_e_m", 3));
     for (const std::string& name : comparison_controller_names()) {
       // Every controller gets the limits the simulated actuator enforces, so that all rows are
       // compared under the same C1 and C2.
       auto controller = make_comparison_controller(name, detail::comparison_setup_for(scenario));
       const io::RunResult run = io::run_scenario(scenario, *controller);
-      const Metrics& m = run.metrics;
       const SaturationStatistics& s = controller->saturation();
-      table.rows.push_back({ResultsTable::number(speed, 1), name,
-                            ResultsTable::number(m.max_abs_rear_error_m),
-                            ResultsTable::number(m.command_rate_std_radps),
-                            ResultsTable::number(m.command_acceleration_max_radps2, 2),
-                            std::to_string(s.angle_limited), std::to_string(s.rate_limited),
-                            ResultsTable::number(s.limited_fraction()),
-                            ResultsTable::number(s.max_rate_excess_radps),
-                            ResultsTable::number(m.max_abs_side_slip_rad), ""});
+      add_row(speed, name, run.metrics, std::to_string(s.angle_limited + s.rate_limited), "");
     }
   }
   table.notes = {
-      "max_abs_e_m: rear-axle lateral error over the run. std_rate / max_accel: of the steering "
-      "command. Every controller is limited to the scenario actuator's angle and rate "
-      "(max_angle_rad, max_rate_radps); proposed_c0/c1 are sized so that their worst case fits "
-      "them at the scenario speed. angle_hits / rate_hits: updates in which the saturation "
-      "clamped the raw command; for the scenario row: metric violations of the vehicle file's "
-      "limits (0.4 rad/s). paper_max_e_m: the paper's proposed C^1 controller (Sec. IV-C), from "
+      "Default gains, not tuned (the tuned comparison is tuning_rule.md). max_abs_e_m: "
+      "rear-axle lateral error over the run. held_*: the held command (zero-order hold) by "
+      "differences over the control period (docs/metrics.md). held_above_limits: held-command "
+      "samples above the car's angle, rate (0.4 rad/s) or acceleration (8 rad/s^2) limit. "
+      "Every baseline is saturated to the scenario actuator's angle and rate limits; "
+      "clamped_updates: updates in which that saturation cut the raw command. proposed_c0/c1 "
+      "are sized so that their worst case fits those limits at the scenario speed. "
+      "paper_max_e_m: the paper's proposed C^1 controller (Sec. IV-C), from "
       "data/paper_figures.csv."};
   return table;
 }

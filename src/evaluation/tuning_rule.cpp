@@ -1,21 +1,25 @@
 #include "smoothsteer/evaluation/tuning_rule.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <map>
 #include <stdexcept>
 #include <tuple>
 
-#include "scenario_setup.hpp"
 #include "smoothsteer/baselines/parameter_checks.hpp"
+#include "smoothsteer/evaluation/certified_route.hpp"
 
 namespace smoothsteer {
 
 namespace {
 
-// Ranges: about a factor 4 either side of each default (docs/baselines.md "Gains").
+// Ranges: about a factor 4 either side of each default (docs/baselines.md "Gains"); for the
+// certified controller the knobs of its tuning route (certified_route.hpp).
 const std::map<std::string, std::vector<GainAxis>, std::less<>>& axes_table() {
   static const std::map<std::string, std::vector<GainAxis>, std::less<>> table{
+      {certified_controller_name,
+       {{"feedforward_rate_share", 0.2, 0.8}, {"boundary_layer", 0.005, 0.08}}},
       {"hosm", {{"hosm_heading_bound_rad", 0.1, 1.2}}},
       {"newton_raphson", {{"horizon_s", 0.3, 2.4}, {"gain_per_s", 1.0, 16.0}}},
       {"stanley", {{"gain_per_s", 0.5, 8.0}, {"softening_mps", 0.25, 4.0}}},
@@ -41,28 +45,14 @@ double grid_value(const GainAxis& axis, int index, int count) {
   return axis.low * std::pow(axis.high / axis.low, fraction);
 }
 
-ScenarioScore score(const io::Scenario& scenario, const std::string& controller,
-                    const std::vector<std::pair<std::string, double>>& gains, double divergence_m) {
-  ComparisonSetup setup = detail::comparison_setup_for(scenario);
-  for (const auto& [key, value] : gains) apply_gain(controller, key, value, setup);
-  auto saturated = make_comparison_controller(controller, setup);
-  const io::RunResult run = io::run_scenario(scenario, *saturated);
-  const Metrics& m = run.metrics;
-  ScenarioScore result;
-  result.scenario = scenario.name;
-  result.max_abs_e_m = m.max_abs_rear_error_m;
-  result.max_abs_e_after_reaching_m = m.max_abs_rear_error_after_reaching_m;
-  result.held_rate_rms_radps = m.held_rate_rms_radps;
-  result.actual_rate_rms_radps = m.actual_rate_rms_radps;
-  result.max_side_slip_rad = m.max_abs_side_slip_rad;
-  result.clamped_updates =
-      saturated->saturation().angle_limited + saturated->saturation().rate_limited;
-  result.diverged = !std::isfinite(m.max_abs_rear_error_m) ||
-                    m.max_abs_rear_error_m > divergence_m || m.non_finite_values > 0;
-  return result;
-}
-
 }  // namespace
+
+const std::vector<std::string>& study_controller_names() {
+  static const std::vector<std::string> names{
+      certified_controller_name, "pure_pursuit", "stanley",        "lqr", "hosm",
+      "newton_raphson",          "mpc",          "mpc_constrained"};
+  return names;
+}
 
 std::vector<GainAxis> gain_axes(std::string_view controller) {
   const auto found = axes_table().find(controller);
@@ -135,13 +125,14 @@ std::vector<int> grid_shape(int budget, std::size_t axes) {
 }
 
 void TuningRuleOptions::validate() const {
-  detail::require(detail::positive_finite(divergence_m), "TuningRuleOptions", "divergence_m",
-                  divergence_m, "must be finite and > 0");
+  detail::require(positive_finite(divergence_m), "TuningRuleOptions", "divergence_m", divergence_m,
+                  "must be finite and > 0");
   for (const std::string& name : controllers) {
     const auto& known = comparison_controller_names();
-    if (std::find(known.begin(), known.end(), name) == known.end()) {
+    if (name != certified_controller_name &&
+        std::find(known.begin(), known.end(), name) == known.end()) {
       throw std::invalid_argument("TuningRuleOptions: controllers contains '" + name +
-                                  "', which is not a comparison controller");
+                                  "', which is neither 'certified' nor a comparison controller");
     }
     if (const std::size_t axes = gain_axes(name).size(); axes > 0) grid_shape(budget, axes);
   }
@@ -165,9 +156,11 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
         axes.empty() ? std::vector<int>{} : grid_shape(options.budget, axes.size());
     int configurations = 1;
     for (int count : shape) configurations *= count;
-    // Key of a configuration: (not admissible, worst max |e|, mean held rate RMS, grid index).
-    using Rank = std::tuple<bool, double, double, int>;
-    Rank best{true, HUGE_VAL, HUGE_VAL, configurations};
+    // Key of a configuration: (not admissible, training scenarios diverged or not certifiable,
+    // held-command samples above the limits, worst max |e|, mean held rate RMS, grid
+    // index). For admissible configurations the second and third are 0: the rule of the header.
+    using Rank = std::tuple<bool, int, long, double, double, int>;
+    Rank best{true, INT_MAX, LONG_MAX, HUGE_VAL, HUGE_VAL, configurations};
     std::vector<std::pair<std::string, double>> best_gains;
     for (int index = 0; index < configurations; ++index) {
       std::vector<std::pair<std::string, double>> gains;
@@ -178,14 +171,22 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
         remainder /= count;
       }
       bool admissible = true;
+      int failed = 0;
+      long violations = 0;
       double worst = 0.0, rate_sum = 0.0;
       for (const io::Scenario& scenario : training) {
-        const ScenarioScore s = score(scenario, controller, gains, options.divergence_m);
-        admissible = admissible && !s.diverged && s.clamped_updates == 0;
-        worst = std::max(worst, std::isfinite(s.max_abs_e_m) ? s.max_abs_e_m : HUGE_VAL);
-        rate_sum += s.held_rate_rms_radps;
+        const ScenarioScore s =
+            score_configuration(scenario, controller, gains, options.divergence_m);
+        admissible = admissible && s.admissible();
+        failed += (s.diverged || s.infeasible) ? 1 : 0;
+        violations += s.held_above_limits();
+        const double max_e = s.metrics.max_abs_rear_error_m;
+        worst = std::max(worst, std::isfinite(max_e) ? max_e : HUGE_VAL);
+        rate_sum += s.metrics.held_rate_rms_radps;
       }
-      const Rank rank{!admissible, worst, rate_sum / static_cast<double>(training.size()), index};
+      const Rank rank{
+          !admissible, failed, violations, worst, rate_sum / static_cast<double>(training.size()),
+          index};
       if (rank < best) {
         best = rank;
         best_gains = gains;
@@ -196,63 +197,14 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
     tuned.gains = best_gains;
     tuned.configurations = configurations;
     tuned.admissible = !std::get<0>(best);
-    tuned.training_worst_max_abs_e_m = std::get<1>(best);
+    tuned.training_worst_max_abs_e_m = std::get<3>(best);
     for (const io::Scenario& scenario : held_out) {
-      tuned.held_out.push_back(score(scenario, controller, best_gains, options.divergence_m));
+      tuned.held_out.push_back(
+          score_configuration(scenario, controller, best_gains, options.divergence_m));
     }
     result.controllers.push_back(std::move(tuned));
   }
   return result;
-}
-
-ResultsTable TuningRuleResult::table() const {
-  ResultsTable t;
-  t.title = "Every controller tuned by one rule, reported on held-out scenarios";
-  t.header = {"scenario",
-              "controller",
-              "max_abs_e_m",
-              "max_abs_e_after_reaching_m",
-              "held_rate_rms_radps",
-              "actual_rate_rms_radps",
-              "clamped_updates",
-              "diverged",
-              "max_side_slip_rad",
-              "configurations",
-              "admissible_in_training",
-              "gains"};
-  for (std::size_t s = 0; s < held_out.size(); ++s) {
-    for (const TunedController& c : controllers) {
-      const ScenarioScore& score = c.held_out[s];
-      std::string gains;
-      for (const auto& [key, value] : c.gains) {
-        gains += (gains.empty() ? "" : " ") + key + "=" + ResultsTable::number(value, 4);
-      }
-      t.rows.push_back({score.scenario, c.controller, ResultsTable::number(score.max_abs_e_m),
-                        ResultsTable::number(score.max_abs_e_after_reaching_m),
-                        ResultsTable::number(score.held_rate_rms_radps),
-                        ResultsTable::number(score.actual_rate_rms_radps),
-                        std::to_string(score.clamped_updates), score.diverged ? "yes" : "no",
-                        ResultsTable::number(score.max_side_slip_rad),
-                        std::to_string(c.configurations), c.admissible ? "yes" : "no",
-                        gains.empty() ? "fixed" : gains});
-    }
-  }
-  std::string training_names, held_out_names;
-  for (const std::string& name : training) training_names += " " + name;
-  for (const std::string& name : held_out) held_out_names += " " + name;
-  t.notes = {"Tuning rule (docs/baselines.md): log-spaced grid of " +
-                 std::to_string(options.budget) +
-                 " configurations per tuned controller; chosen on:" + training_names +
-                 "; reported on:" + held_out_names +
-                 ". Lead-wheel controllers (dubins_smc, proposed_*) keep fixed parameters.",
-             "Chosen: admissible (no clamped update, max |e| <= " +
-                 ResultsTable::number(options.divergence_m, 1) +
-                 " m) on every training scenario first, then the smallest worst-case max |e|, "
-                 "then the smallest mean RMS rate of the held command (docs/metrics.md). "
-                 "max_abs_e_after_reaching_m: after the lead "
-                 "wheel stays within the scenario's reaching threshold (-1: never); on "
-                 "circle_sections the whole-run max |e| is the 1 m start offset."};
-  return t;
 }
 
 }  // namespace smoothsteer

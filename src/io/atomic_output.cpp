@@ -20,7 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 //! Files a run writes; an existing output directory may hold only these.
-constexpr std::array<const char*, 3> run_output_names{"trace.csv", "summary.json", "trace.png"};
+constexpr std::array<const char*, 4> run_output_names{"trace.csv", "summary.json", "trace.png",
+                                                      "path.csv"};
 
 std::string unique_suffix() {
   static std::atomic<unsigned long> counter{0};
@@ -119,9 +120,10 @@ OutputDirectory::OutputDirectory(std::string target, std::string option)
         for (const char* output : run_output_names) ours = ours || entry_name == output;
       }
       if (!ours) {
-        throw std::runtime_error(option_ + " '" + target_ + "': holds '" + entry_name +
-                                 "', which is not an output of a run; give a new directory or "
-                                 "one that only holds trace.csv, summary.json, trace.png");
+        throw std::runtime_error(
+            option_ + " '" + target_ + "': holds '" + entry_name +
+            "', which is not an output of a run; give a new directory or "
+            "one that only holds trace.csv, summary.json, trace.png, path.csv");
       }
     }
   }

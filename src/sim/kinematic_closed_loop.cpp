@@ -6,11 +6,15 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "smoothsteer/sim/closed_loop_count.hpp"
+
 namespace smoothsteer {
 
 KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, const Pose2& start,
                                               const KinematicLoopOptions& options) {
+  detail::count_closed_loop();
   KinematicLoopResult result;
+  result.options = options;
   KinematicSingleTrack plant{options.wheelbase_m};
   const int steps = static_cast<int>(std::ceil(options.duration_s / options.period_s));
   if (options.record_trace) result.trace.reserve(static_cast<std::size_t>(steps));
@@ -55,6 +59,35 @@ KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, co
     distance += std::abs(options.speed_mps) * options.period_s;
   }
   return result;
+}
+
+TraceSample kinematic_trace_sample(const KinematicTraceSample& k,
+                                   const KinematicLoopOptions& options) noexcept {
+  const TrackingDiagnostics& d = k.output.diagnostics;
+  TraceSample s;
+  s.time_s = k.time_s;
+  s.distance_m = k.distance_m;
+  s.rear_axle = k.pose;
+  s.speed_mps = options.speed_mps;
+  s.path_arc_length_m = d.path_arc_length_m;
+  s.path_curvature = d.path_curvature;
+  s.lateral_error_m = d.lateral_error_m;
+  s.heading_error_rad = d.heading_error_rad;
+  s.front_lateral_error_m = d.front_lateral_error_m;
+  s.lead_lateral_error_m = d.lead_lateral_error_m;
+  s.measured_lateral_error_m = d.lateral_error_m;
+  s.sliding_variable = d.sliding_variable;
+  s.lead_curvature = d.lead_curvature;
+  s.steering_command_rad = k.output.steering_angle_rad;
+  s.steering_command_rate_radps = k.output.steering_rate_radps;
+  s.steering_command_acceleration_radps2 = k.output.steering_acceleration_radps2;
+  s.steering_actual_rad = k.output.steering_angle_rad;
+  s.steering_actual_rate_radps = k.output.steering_rate_radps;
+  s.steering_actual_acceleration_radps2 = k.output.steering_acceleration_radps2;
+  s.yaw_rate_radps =
+      options.speed_mps *
+      (std::tan(k.output.steering_angle_rad) / options.wheelbase_m + options.curvature_disturbance);
+  return s;
 }
 
 void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::string& file_path) {

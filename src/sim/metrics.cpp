@@ -11,7 +11,7 @@ bool exceeds(double value, double limit, double tolerance) {
 }
 
 int count_non_finite(const TraceSample& s) {
-  const auto values = trace_row(s);
+  const auto values = trace_values(s);
   int count = 0;
   for (double v : values) count += std::isfinite(v) ? 0 : 1;
   return count;
@@ -81,6 +81,7 @@ void MetricsAccumulator::add(const TraceSample& s) {
   m_.final_abs_rear_error_m = std::abs(s.lateral_error_m);
   m_.non_finite_values += count_non_finite(s);
   m_.max_abs_rear_error_m = std::max(m_.max_abs_rear_error_m, std::abs(s.lateral_error_m));
+  rear_error_.add(s.lateral_error_m);
   m_.max_abs_front_error_m = std::max(m_.max_abs_front_error_m, std::abs(s.front_lateral_error_m));
   m_.max_abs_lead_error_m = std::max(m_.max_abs_lead_error_m, std::abs(s.lead_lateral_error_m));
 
@@ -176,6 +177,7 @@ Metrics MetricsAccumulator::result() const {
   m.held_rate_max_radps = held_rate_.max_abs;
   m.held_acceleration_rms_radps2 = held_acceleration_.rms();
   m.held_acceleration_max_radps2 = held_acceleration_.max_abs;
+  m.rms_rear_error_m = rear_error_.rms();
   return m;
 }
 
@@ -227,7 +229,8 @@ std::vector<std::pair<std::string, double>> metric_values(const Metrics& m) {
           {"actual_rate_rms_radps", m.actual_rate_rms_radps},
           {"actual_acceleration_rms_radps2", m.actual_acceleration_rms_radps2},
           {"actual_rate_violations", m.actual_rate_violations},
-          {"actual_acceleration_violations", m.actual_acceleration_violations}};
+          {"actual_acceleration_violations", m.actual_acceleration_violations},
+          {"rms_rear_error_m", m.rms_rear_error_m}};
 }
 
 }  // namespace smoothsteer

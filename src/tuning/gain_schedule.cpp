@@ -238,50 +238,36 @@ const char* to_string(VelocityRegion region) noexcept {
   return "?";
 }
 
-void TuningOptions::validate() const {
-  std::ostringstream text;
-  text.precision(10);
-  if (order < 1 || order > 2) {
-    text << "TuningOptions: order = " << order
-         << " must be 1 or 2 (n >= 3: see docs/tuning.md, 'Beyond n = 2')";
-  } else if (!std::isfinite(max_longitudinal_acceleration_mps2) ||
-             max_longitudinal_acceleration_mps2 < 0.0) {
-    text << "TuningOptions: max_longitudinal_acceleration_mps2 = "
-         << max_longitudinal_acceleration_mps2 << " must be finite and >= 0";
-  } else if (!std::isfinite(min_lead_curvature_bound) || min_lead_curvature_bound <= 0.0) {
-    text << "TuningOptions: min_lead_curvature_bound = " << min_lead_curvature_bound
-         << " must be finite and > 0";
-  } else if (!(matched_disturbance_curvature >= 0.0) ||
-             !std::isfinite(matched_disturbance_curvature)) {
-    text << "TuningOptions: matched_disturbance_curvature = " << matched_disturbance_curvature
-         << " must be finite and >= 0";
-  } else if (!(path_curvature_bound >= 0.0) || !std::isfinite(path_curvature_bound)) {
-    text << "TuningOptions: path_curvature_bound = " << path_curvature_bound
-         << " must be finite and >= 0";
-  } else if (std::isnan(path_curvature_rate_bound) || path_curvature_rate_bound < 0.0) {
-    text << "TuningOptions: path_curvature_rate_bound = " << path_curvature_rate_bound
-         << " must be >= 0 (+inf: unknown)";
-  } else if (!(feedforward_rate_margin >= 1.0) || !std::isfinite(feedforward_rate_margin)) {
-    text << "TuningOptions: feedforward_rate_margin = " << feedforward_rate_margin
-         << " must be finite and >= 1";
-  } else if (!(feedforward_headroom >= 1.0 && feedforward_headroom <= 3.0)) {
-    text << "TuningOptions: feedforward_headroom = " << feedforward_headroom
-         << " must be in [1, 3]";
-  } else if (!(feedforward_rate_share > 0.0 && feedforward_rate_share < 1.0)) {
-    text << "TuningOptions: feedforward_rate_share = " << feedforward_rate_share
-         << " must be in (0, 1)";
-  } else if (!(feedforward_ramp_length_m > 0.0) || !std::isfinite(feedforward_ramp_length_m)) {
-    text << "TuningOptions: feedforward_ramp_length_m = " << feedforward_ramp_length_m
-         << " must be finite and > 0";
-  } else if (!(switching_floor_share > 0.0 && switching_floor_share < 1.0)) {
-    text << "TuningOptions: switching_floor_share = " << switching_floor_share
-         << " must be in (0, 1)";
-  } else if (!(k_rob_ceiling > 0.0 && k_rob_ceiling < 1.0)) {
-    text << "TuningOptions: k_rob_ceiling = " << k_rob_ceiling << " must be in (0, 1)";
-  } else if (!(k_rob_floor >= 0.0 && k_rob_floor < k_rob_ceiling)) {
-    text << "TuningOptions: k_rob_floor = " << k_rob_floor << " must be in [0, k_rob_ceiling)";
-  }
-  if (!text.str().empty()) throw std::invalid_argument(text.str());
+std::optional<Violation> TuningOptions::first_violation() const noexcept {
+  RuleChecker check("TuningOptions");
+  check.require(order >= 1 && order <= 2, "order", order,
+                "must be 1 or 2 (n >= 3: see docs/tuning.md, 'Beyond n = 2')");
+  check.require(non_negative_finite(max_longitudinal_acceleration_mps2),
+                "max_longitudinal_acceleration_mps2", max_longitudinal_acceleration_mps2,
+                "must be finite and >= 0");
+  check.require(positive_finite(min_lead_curvature_bound), "min_lead_curvature_bound",
+                min_lead_curvature_bound, "must be finite and > 0");
+  check.require(non_negative_finite(matched_disturbance_curvature), "matched_disturbance_curvature",
+                matched_disturbance_curvature, "must be finite and >= 0");
+  check.require(non_negative_finite(path_curvature_bound), "path_curvature_bound",
+                path_curvature_bound, "must be finite and >= 0");
+  check.require(path_curvature_rate_bound >= 0.0, "path_curvature_rate_bound",
+                path_curvature_rate_bound, "must be >= 0 (+inf: unknown)");
+  check.require(std::isfinite(feedforward_rate_margin) && feedforward_rate_margin >= 1.0,
+                "feedforward_rate_margin", feedforward_rate_margin, "must be finite and >= 1");
+  check.require(feedforward_headroom >= 1.0 && feedforward_headroom <= 3.0, "feedforward_headroom",
+                feedforward_headroom, "must be in [1, 3]");
+  check.require(feedforward_rate_share > 0.0 && feedforward_rate_share < 1.0,
+                "feedforward_rate_share", feedforward_rate_share, "must be in (0, 1)");
+  check.require(positive_finite(feedforward_ramp_length_m), "feedforward_ramp_length_m",
+                feedforward_ramp_length_m, "must be finite and > 0");
+  check.require(switching_floor_share > 0.0 && switching_floor_share < 1.0, "switching_floor_share",
+                switching_floor_share, "must be in (0, 1)");
+  check.require(k_rob_ceiling > 0.0 && k_rob_ceiling < 1.0, "k_rob_ceiling", k_rob_ceiling,
+                "must be in (0, 1)");
+  check.require(k_rob_floor >= 0.0 && k_rob_floor < k_rob_ceiling, "k_rob_floor", k_rob_floor,
+                "must be in [0, k_rob_ceiling)");
+  return check.first();
 }
 
 GainSchedule::GainSchedule(VehicleLimits vehicle, TuningOptions options,

@@ -18,8 +18,8 @@ ScheduledController::ScheduledController(GainSchedule schedule, std::shared_ptr<
       controller_(non_empty(schedule_).parameters_at(schedule_.entries().front().speed_mps),
                   std::move(path)) {}
 
-Status ScheduledController::update(const ControllerInput& input,
-                                   ControllerOutput& output) noexcept {
+Status ScheduledController::compute_command(const ControllerInput& input,
+                                            ControllerOutput& output) noexcept {
   if (!std::isfinite(input.speed_mps)) return Status::invalid_input;
   const double speed = std::abs(input.speed_mps);
   if (speed != tuned_speed_) {

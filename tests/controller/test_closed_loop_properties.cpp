@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/sim/closed_loop_count.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 #include "support/property.hpp"
 #include "support/random_setup.hpp"
@@ -142,6 +143,7 @@ TEST(ClosedLoopProperties, DelayCompensationRestoresConvergenceUnderDeadTime) {
         static_cast<int>((300.0 + 20.0 / parameters.lead_curvature_bound) / speed / period);
     double tail_error = 0.0, max_steering = 0.0;
     ControllerOutput output;
+    smoothsteer::detail::count_closed_loop();  // a closed loop (item 7 count)
     for (int step = 0; step < steps; ++step) {
       ASSERT_EQ(controller.update({pose.position, pose.heading_rad, speed, 0.0, period}, output),
                 Status::ok);

@@ -12,6 +12,7 @@
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/sim/closed_loop_count.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 #include "support/random_setup.hpp"
@@ -62,6 +63,7 @@ TEST(FeedforwardCertificate, HeldCommandStaysWithinTheCertificate) {
     double speed = random.uniform(1.0, 20.0), direction = random.coin() ? 1.0 : -1.0;
     Pose2 pose = start;
     double previous[2] = {0.0, 0.0}, previous_speed = speed;
+    smoothsteer::detail::count_closed_loop();  // a closed loop (item 7 count)
     for (int step = 0; step < static_cast<int>(60.0 / dt); ++step) {
       const double a = direction * acceleration;
       ControllerOutput out;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "smoothsteer/evaluation/certified_route.hpp"
 #include "smoothsteer/evaluation/controller_registration.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
 
@@ -52,6 +53,15 @@ TEST(TuningRule, EveryAxisKeyIsAGainOfItsController) {
   ComparisonSetup setup;
   EXPECT_THROW(apply_gain("stanley", "weight_lateral", 1.0, setup), std::invalid_argument);
   EXPECT_TRUE(gain_axes("proposed_c1").empty());
+  // The certified controller's axes are knobs of its route, and every study controller has a
+  // grid (the same budget for all).
+  const io::Scenario scenario = io::load_scenario(scenario_file("lane_change_15"));
+  for (const GainAxis& axis : gain_axes(certified_controller_name)) {
+    EXPECT_NO_THROW(certified_route_options(scenario, {{axis.key, axis.low}})) << axis.key;
+  }
+  for (const std::string& name : study_controller_names()) {
+    EXPECT_FALSE(gain_axes(name).empty()) << name;
+  }
 }
 
 TEST(TuningRule, IsDeterministicAndReportsOnHeldOutScenariosOnly) {
@@ -63,11 +73,11 @@ TEST(TuningRule, IsDeterministicAndReportsOnHeldOutScenariosOnly) {
       io::load_scenario(scenario_file("lane_change_15"), short_run)};
   TuningRuleOptions options;
   options.budget = 4;
-  options.controllers = {"stanley", "pure_pursuit", "proposed_c1"};
+  options.controllers = {"certified", "stanley", "pure_pursuit", "proposed_c1"};
   const TuningRuleResult first = run_tuning_rule(training, held_out, options);
   const TuningRuleResult second = run_tuning_rule(training, held_out, options);
   EXPECT_EQ(first.table().to_csv(), second.table().to_csv());
-  ASSERT_EQ(first.controllers.size(), 3u);
+  ASSERT_EQ(first.controllers.size(), 4u);
   for (const TunedController& tuned : first.controllers) {
     const std::vector<GainAxis> axes = gain_axes(tuned.controller);
     EXPECT_EQ(tuned.configurations, axes.empty() ? 1 : 4) << tuned.controller;
@@ -81,6 +91,37 @@ TEST(TuningRule, IsDeterministicAndReportsOnHeldOutScenariosOnly) {
     EXPECT_EQ(tuned.held_out[0].scenario, held_out[0].name);
   }
   EXPECT_THROW(run_tuning_rule(training, {}, options), std::invalid_argument);
+  // One row per (held-out scenario, controller), and no wall-clock figure in the table.
+  EXPECT_EQ(first.table().rows.size(), 4u);
+  EXPECT_EQ(first.table().to_csv().find("update_us"), std::string::npos);
+  EXPECT_EQ(first.timings_table().rows.size(), 4u);
+}
+
+TEST(TuningRule, AdmissibleMeansNoHeldSampleAboveTheLimitsAndNoDivergence) {
+  ScenarioScore score;
+  EXPECT_TRUE(score.admissible());
+  score.clamped_updates = 3;  // cut to the limits: counted, allowed
+  EXPECT_TRUE(score.admissible());
+  score.metrics.held_acceleration_violations = 1;
+  EXPECT_EQ(score.held_above_limits(), 1);
+  EXPECT_FALSE(score.admissible());
+  score.metrics.held_acceleration_violations = 0;
+  score.diverged = true;
+  EXPECT_FALSE(score.admissible());
+  score.diverged = false;
+  score.infeasible = true;
+  EXPECT_FALSE(score.admissible());
+}
+
+TEST(TuningRule, RejectsAnUnknownController) {
+  TuningRuleOptions options;
+  options.controllers = {"certified", "no_such_controller"};
+  try {
+    options.validate();
+    FAIL() << "unknown controller accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("no_such_controller"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -158,7 +158,26 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
        s,
        {"simulation.control_period_s=0.0200001"},
        {"'simulation'", "0.0200001", "whole multiple"}},
+      // A schedule whose middle row breaks a rule (it used to load and stop the run at step 0).
+      {"schedule middle row k_rob = 5",
+       "name: t\npath: {type: straight}\nspeed: {initial_mps: 5}\n"
+       "controller: {type: scheduled_lead_wheel, schedule: sch_bad.csv}\n",
+       {},
+       {"sch_bad.csv", "line 3", "k_rob"}},
+      {"waypoint file ~",
+       "name: t\npath: {type: waypoints_csv, file: ~}\nspeed: {initial_mps: 5}\n"
+       "controller: {type: lead_wheel}\n",
+       {},
+       {"FILE", "'path.file'", "has no value"}},
   };
+  write("sch_bad.csv",
+        "speed_mps,region,fictive_wheelbase_m,lead_wheelbase_m,lead_curvature_bound_per_m,"
+        "lead_radius_m,k_rob,max_steering_angle_rad,max_steering_rate_radps,"
+        "max_steering_acceleration_radps2,feedforward_curvature_bound_per_m,"
+        "feedforward_curvature_rate_per_m2\n"
+        "1,5,2.57,0.1,0.1,10,0.3,0.25,0.4,4,0.02,0.01\n"
+        "2,5,2.57,0.1,0.08,12.5,5,0.2,0.4,5,0.02,0.01\n"
+        "3,5,2.57,0.1,0.05,20,0.3,0.13,0.4,7,0.02,0.01\n");
   const std::string file = (directory_ / "s.yaml").string();
   for (const BadInput& input : table) {
     SCOPED_TRACE(input.what);

@@ -94,7 +94,7 @@ TEST(Registry, OtherLibrariesCanAddControllerTypes) {
   class Straight final : public SteeringController {
    public:
     explicit Straight(double angle) : angle_(angle) {}
-    Status update(const ControllerInput&, ControllerOutput& out) noexcept override {
+    Status compute_command(const ControllerInput&, ControllerOutput& out) noexcept override {
       out = {};
       out.steering_angle_rad = angle_;
       return Status::ok;

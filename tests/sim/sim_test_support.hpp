@@ -9,7 +9,7 @@ namespace smoothsteer::testing {
 class ConstantSteering final : public SteeringController {
  public:
   explicit ConstantSteering(double angle) : angle_(angle) {}
-  Status update(const ControllerInput&, ControllerOutput& output) noexcept override {
+  Status compute_command(const ControllerInput&, ControllerOutput& output) noexcept override {
     output = ControllerOutput{};
     output.steering_angle_rad = angle_;
     output.derivatives_available = 2;

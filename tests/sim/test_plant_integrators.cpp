@@ -18,7 +18,7 @@ namespace {
 //! Held command 0.08 sin(0.7 t) + 0.03 sin(2.1 t) [rad]: open loop, smooth, below every limit.
 class SmoothSteering final : public SteeringController {
  public:
-  Status update(const ControllerInput&, ControllerOutput& output) noexcept override {
+  Status compute_command(const ControllerInput&, ControllerOutput& output) noexcept override {
     output = ControllerOutput{};
     output.steering_angle_rad = 0.08 * std::sin(0.7 * t_) + 0.03 * std::sin(2.1 * t_);
     t_ += 0.02;

@@ -20,7 +20,7 @@ namespace {
 class NanAfter final : public SteeringController {
  public:
   explicit NanAfter(int bad_step) : bad_step_(bad_step) {}
-  Status update(const ControllerInput&, ControllerOutput& output) noexcept override {
+  Status compute_command(const ControllerInput&, ControllerOutput& output) noexcept override {
     output = ControllerOutput{};
     output.steering_angle_rad = 0.01;
     if (step_++ >= bad_step_) {
@@ -46,8 +46,9 @@ TEST(SimulationGuards, NonFiniteSampleStopsTheRunAndIsNeverEmitted) {
   const SimulationResult result =
       simulate(path, model, ActuatorParameters{}, SpeedProfile{5.0, 5.0, 0.0, 0.0}, sim,
                {{0, 0.5}, 0.0}, controller);
-  EXPECT_TRUE(result.non_finite);
-  EXPECT_EQ(result.stop_reason, "non_finite");
+  // SteeringController::update() turns the non-finite output into numerical_error, so the run
+  // stops as a controller error before the sample is emitted.
+  EXPECT_EQ(result.stop_reason, "controller_error");
   EXPECT_EQ(result.trace.size(), 10u);
   const Metrics m = compute_metrics(result.trace, MetricsParameters{});
   EXPECT_EQ(m.non_finite_values, 0);
@@ -87,7 +88,7 @@ TEST(StreamingSimulation, ObserverSeesTheSameSamplesAsTheStoredTrace) {
   EXPECT_TRUE(result.trace.empty());
   ASSERT_EQ(streamed.size(), stored.trace.size());
   for (std::size_t i = 0; i < streamed.size(); ++i) {
-    EXPECT_EQ(trace_row(streamed[i]), trace_row(stored.trace[i])) << "row " << i;
+    EXPECT_EQ(trace_values(streamed[i]), trace_values(stored.trace[i])) << "row " << i;
   }
   const auto batch = metric_values(compute_metrics(stored.trace, MetricsParameters{}));
   const auto online = metric_values(accumulator.result());
@@ -119,6 +120,18 @@ TEST(Metrics, HeldCommandRateAndAccelerationFollowTheirDefinition) {
   EXPECT_EQ(m.actual_rate_violations, 0);
   EXPECT_NEAR(m.actual_acceleration_rms_radps2, 20.0, 1e-12);
   EXPECT_EQ(m.actual_acceleration_violations, 1);
+}
+
+TEST(Metrics, RmsRearErrorIsOverEveryRowWithTheStart) {
+  std::vector<TraceSample> trace(4);
+  const double errors[] = {1.0, -0.5, 0.0, 0.5};
+  for (std::size_t i = 0; i < trace.size(); ++i) {
+    trace[i].time_s = 0.02 * static_cast<double>(i);
+    trace[i].lateral_error_m = errors[i];
+  }
+  const Metrics m = compute_metrics(trace, MetricsParameters{});
+  EXPECT_NEAR(m.rms_rear_error_m, std::sqrt((1.0 + 0.25 + 0.0 + 0.25) / 4.0), 1e-12);
+  EXPECT_NEAR(m.max_abs_rear_error_m, 1.0, 1e-12);
 }
 
 TEST(Metrics, ReachingRestartsAfterEveryExcursion) {

@@ -9,25 +9,12 @@
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/steering_actuator.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
+#include "support/validation_shape.hpp"
 
 namespace smoothsteer {
 namespace {
 
-template <typename T>
-void expect_shape(const T& valid, const T& invalid, const std::string& expected_message) {
-  static_assert(noexcept(valid.is_valid()));
-  EXPECT_TRUE(valid.is_valid());
-  EXPECT_EQ(valid.validation_error(), "");
-  EXPECT_NO_THROW(valid.validate());
-  EXPECT_FALSE(invalid.is_valid());
-  EXPECT_EQ(invalid.validation_error(), expected_message);
-  try {
-    invalid.validate();
-    ADD_FAILURE() << "validate() accepted " << expected_message;
-  } catch (const std::invalid_argument& error) {
-    EXPECT_EQ(std::string(error.what()), expected_message);
-  }
-}
+using testing::expect_shape;
 
 TEST(ValidationShape, EveryParameterStructOffersTheSameThreeCalls) {
   VehicleParameters car;

@@ -103,6 +103,26 @@ TEST_F(Cli, ParseErrorsExitOneAndVersionPrints) {
   EXPECT_EQ(cli({"--help"}).exit_code, 0);
 }
 
+// Defect 8: a baseline's set-up rule (ComparisonSetup) and gains name the scenario and the key.
+TEST_F(Cli, BaselineErrorsNameTheScenarioAndTheKey) {
+  const std::string file = scenario("lane_change_15.yaml");
+  const ProcessResult setup =
+      cli({"run", file, "--out", "o", "--set", "controller.type=proposed_c1", "--set",
+           "controller.lead_wheelbase_m=5"});
+  EXPECT_EQ(setup.exit_code, 1);
+  for (const char* part : {"lane_change_15.yaml", "'controller'",
+                           "ComparisonSetup: "
+                           "lead_wheelbase_m = 5"}) {
+    EXPECT_NE(setup.err.find(part), std::string::npos) << part << " missing in " << setup.err;
+  }
+  const ProcessResult gain = cli({"run", file, "--out", "o", "--set", "controller.type=lqr",
+                                  "--set", "controller.weight_lateral=-1"});
+  EXPECT_EQ(gain.exit_code, 1);
+  for (const char* part : {"lane_change_15.yaml", "'controller.weight_lateral'", "out of range"}) {
+    EXPECT_NE(gain.err.find(part), std::string::npos) << part << " missing in " << gain.err;
+  }
+}
+
 TEST_F(Cli, DemoHelpWritesNoTraceFile) {
   const ProcessResult help = run_process({SMOOTHSTEER_DEMO, "--help"}, directory_);
   EXPECT_EQ(help.exit_code, 0);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/sim/closed_loop_count.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "support/property.hpp"
@@ -88,6 +89,7 @@ void check_limits_while_the_speed_changes(const VehicleLimits& vehicle,
     double speed = 1.0, direction = 1.0, previous_angle = 0.0, previous_rate = 0.0;
     double max_angle = 0, max_rate = 0, max_accel = 0, max_difference_rate = 0,
            max_difference_accel = 0;
+    smoothsteer::detail::count_closed_loop();  // a closed loop (item 7 count)
     for (int step = 0, turns = 0; turns < 4; ++step) {
       const double a = direction * acceleration;
       ControllerOutput out;

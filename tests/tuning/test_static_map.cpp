@@ -180,5 +180,28 @@ TEST(StaticMap, InvalidOptionsNameTheField) {
   }
 }
 
+TEST(StaticMap, ShippedTableEqualsTheComputedOne) {
+  // src/tuning/static_map_table.inc is generated (apps/static_map_table.cpp); a change to the
+  // worst-case computation without regenerating it fails here. The numbers are printed exactly,
+  // so only a different compiler's rounding may move them, far below 1e-12 relative.
+  const StaticMap shipped{};
+  const StaticMap computed = StaticMap::computed();
+  ASSERT_EQ(shipped.ratio_count(), computed.ratio_count());
+  ASSERT_EQ(shipped.angle_count(), computed.angle_count());
+  for (int i = 0; i < shipped.ratio_count(); ++i) {
+    for (int j = 0; j < shipped.angle_count(); ++j) {
+      const MapValue a = shipped.node(i, j);
+      const MapValue b = computed.node(i, j);
+      ASSERT_NEAR(a.rate, b.rate, 1e-12 * std::abs(b.rate)) << "node " << i << ", " << j;
+      ASSERT_NEAR(a.acceleration, b.acceleration, 1e-12 * std::abs(b.acceleration))
+          << "node " << i << ", " << j;
+    }
+  }
+  // Other options build their own table.
+  StaticMapOptions coarse;
+  coarse.angle_samples = 8;
+  EXPECT_EQ(StaticMap(coarse).angle_count(), 9);
+}
+
 }  // namespace
 }  // namespace smoothsteer

@@ -29,6 +29,7 @@
 #include "smoothsteer/baselines/newton_raphson_controller.hpp"
 #include "smoothsteer/baselines/steering_limits.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -54,6 +55,15 @@ struct ComparisonSetup {
   NewtonRaphsonParameters newton_raphson;
   MpcParameters mpc;
 
+  //! Largest wheelbase_m accepted [m].
+  static constexpr double max_wheelbase_m = 1e3;
+
+  //! The first rule broken by a number (validation.hpp); the path is checked by the three below.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return path && !first_violation(); }
+  //! Empty when valid, else "ComparisonSetup: <field> = <value> <rule>" (or the null path).
+  std::string validation_error() const;
+  //! Throws std::invalid_argument with validation_error().
   void validate() const;
 };
 

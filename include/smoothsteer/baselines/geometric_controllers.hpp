@@ -20,6 +20,7 @@
 #include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -27,13 +28,23 @@ struct StanleyParameters {
   double wheelbase_m = 2.7;    //!< lambda_veh: where the front axle is [m]
   double gain_per_s = 2.0;     //!< k [1/s]
   double softening_mps = 1.0;  //!< v_soft: keeps the gain finite at low speed [m/s]
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 class StanleyController final : public SteeringController {
  public:
   StanleyController(const StanleyParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "stanley"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
@@ -53,13 +64,23 @@ struct PurePursuitParameters {
   double min_lookahead_m = 3.0;   //!< L_min [m]
   double lookahead_time_s = 0.6;  //!< k_v: look-ahead grows by k_v |v| [s]
   double max_lookahead_m = 30.0;  //!< L_max [m]
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 class PurePursuitController final : public SteeringController {
  public:
   PurePursuitController(const PurePursuitParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "pure_pursuit"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

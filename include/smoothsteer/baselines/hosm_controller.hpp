@@ -26,6 +26,7 @@
 #include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -41,14 +42,23 @@ struct HosmParameters {
 
   //! alpha = G delta-bar' - F, the guaranteed control authority on sigma3' [1/m^3].
   double alpha() const noexcept;
-  //! Throws std::invalid_argument naming the field, its value and the rule (incl. alpha > 0).
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 class HosmController final : public SteeringController {
  public:
   HosmController(const HosmParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "hosm"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

@@ -18,6 +18,7 @@
 #include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -29,7 +30,13 @@ struct LqrParameters {
       100.0;                   //!< r [1/rad^2]; small r limit-cycles against a 0.6 rad/s rate limit
   double min_speed_mps = 1.0;  //!< gains are computed at max(v, this) [m/s]
   bool curvature_feedforward = true;
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 //! Feedback gains delta_fb = -(k_e e + k_psi psi_e) at speed v (closed-form continuous LQR).
@@ -42,7 +49,11 @@ LqrGains lqr_gains(const LqrParameters& parameters, double speed_mps) noexcept;
 class LqrController final : public SteeringController {
  public:
   LqrController(const LqrParameters& parameters, std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "lqr"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

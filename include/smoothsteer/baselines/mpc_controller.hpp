@@ -30,6 +30,7 @@
 #include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -58,8 +59,13 @@ struct MpcParameters {
   SteeringLimits limits;       //!< saturation (unconstrained) or constraints (constrained)
   MpcSolver solver = MpcSolver::unconstrained;
 
-  //! Throws std::invalid_argument "MpcParameters: <field> = <value> <rule>".
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 namespace detail {
@@ -73,7 +79,10 @@ class MpcController final : public SteeringController {
   MpcController(const MpcController&) = delete;
   MpcController& operator=(const MpcController&) = delete;
 
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override {
     return parameters_.solver == MpcSolver::constrained ? "mpc_constrained" : "mpc";

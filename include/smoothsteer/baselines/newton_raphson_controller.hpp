@@ -24,6 +24,7 @@
 #include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -34,7 +35,13 @@ struct NewtonRaphsonParameters {
   double min_speed_mps = 0.5;  //!< below this |v| the prediction is not informative: hold
   SteeringLimits limits;       //!< clamp of u and du/dt inside the flow
 
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 //! Prediction of the rear axle over arc length `distance_m` with constant steering angle:
@@ -54,7 +61,11 @@ class NewtonRaphsonController final : public SteeringController {
  public:
   NewtonRaphsonController(const NewtonRaphsonParameters& parameters,
                           std::shared_ptr<const Path> path);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "newton_raphson"; }
   //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.

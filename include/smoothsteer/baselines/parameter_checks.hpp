@@ -4,39 +4,30 @@
 //! message has the form "<owner>: <field> = <value> <rule>".
 
 #include <cmath>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer::detail {
 
-//! Throws std::invalid_argument "<owner>: <field> = <value> <rule>" unless `ok`.
+//! Throws std::invalid_argument "<owner>: <field> = <value> <rule>" (validation.hpp) unless `ok`;
+//! for set-up checks outside a parameter struct's first_violation().
 inline void require(bool ok, const char* owner, const char* field, double value,
                     const std::string& rule) {
-  if (ok) return;
-  std::ostringstream message;
-  message.precision(10);
-  message << owner << ": " << field << " = " << value << " " << rule;
-  throw std::invalid_argument(message.str());
-}
-
-inline bool positive_finite(double value) {
-  return std::isfinite(value) && value > 0.0;
+  if (!ok) throw_if_violated(Violation{owner, "", field, value, rule.c_str()});
 }
 
 //! The parameters of the extended system x_ext (eq. x_ext) with C1 and C2, shared by HOSM and the
 //! optimal reaching problem: lambda > 0, delta-bar in (0, pi/2), delta-bar' > 0.
-inline void require_x_ext_limits(const char* owner, double wheelbase_m,
+inline void require_x_ext_limits(RuleChecker& check, double wheelbase_m,
                                  double steering_angle_bound_rad,
-                                 double steering_rate_bound_per_m) {
-  require(positive_finite(wheelbase_m), owner, "wheelbase_m", wheelbase_m,
-          "must be finite and > 0");
-  require(positive_finite(steering_angle_bound_rad) && steering_angle_bound_rad < pi / 2.0, owner,
-          "steering_angle_bound_rad", steering_angle_bound_rad, "must be in (0, pi/2)");
-  require(positive_finite(steering_rate_bound_per_m), owner, "steering_rate_bound_per_m",
-          steering_rate_bound_per_m, "must be finite and > 0");
+                                 double steering_rate_bound_per_m) noexcept {
+  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require(positive_finite(steering_angle_bound_rad) && steering_angle_bound_rad < pi / 2.0,
+                "steering_angle_bound_rad", steering_angle_bound_rad, "must be in (0, pi/2)");
+  check.require(positive_finite(steering_rate_bound_per_m), "steering_rate_bound_per_m",
+                steering_rate_bound_per_m, "must be finite and > 0");
 }
 
 }  // namespace smoothsteer::detail

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -19,8 +20,13 @@ struct SteeringLimits {
   double angle_rad = 0.5;   //!< delta-bar, C1 [rad]
   double rate_radps = 0.6;  //!< bound on |d delta/dt| [rad/s] (C2 times the speed)
 
-  //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 //! How often and by how much the raw command of a controller exceeded the limits.
@@ -61,7 +67,11 @@ class SaturatedController final : public SteeringController {
  public:
   SaturatedController(std::unique_ptr<SteeringController> inner, const SteeringLimits& limits,
                       std::string name);
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return name_.c_str(); }
   //! Forwarded: the wrapped controller decides whether it has a matched-disturbance input.

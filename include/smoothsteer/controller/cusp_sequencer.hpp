@@ -11,6 +11,7 @@
 
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path_plan.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -19,7 +20,13 @@ struct CuspSpeedOptions {
   double deceleration_mps2 = 0.5;   //!< braking towards each cusp and the end [m/s^2]
   double stop_tolerance_m = 0.005;  //!< a piece is done this close to its end [m]
   //! Throws std::invalid_argument naming the field unless all are finite and > 0.
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 class CuspSequencer {

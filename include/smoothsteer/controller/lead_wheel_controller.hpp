@@ -32,7 +32,10 @@ class LeadWheelController final : public SteeringController {
   //! Validates the parameters (std::invalid_argument on error) and requires a path.
   LeadWheelController(const ControllerParameters& parameters, std::shared_ptr<const Path> path);
 
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   //! Re-initialises the chain in stationary cornering at the measured steering angle (clamped
   //! into the invariant set) for forward driving; the direction is re-detected from v.
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;

@@ -3,6 +3,9 @@
 //! The real-time interface shared by the lead-wheel controller and the comparison controllers:
 //! fill a ControllerInput, call update(input, output) once per control period, read the output.
 
+#include <array>
+#include <bit>
+#include <cmath>
 #include <memory>
 
 #include "smoothsteer/math/vec2.hpp"
@@ -50,12 +53,65 @@ struct ControllerOutput {
   TrackingDiagnostics diagnostics;
 };
 
+//! The range of ControllerInput that update() accepts. Beyond it the arithmetic breaks: squared
+//! distances overflow from 1e154 m on, angles and positions lose every digit that matters. The
+//! bounds are far beyond any car (issue 12, defect 2).
+struct ControllerInputRange {
+  static constexpr double max_abs_coordinate_m = 1e9;  //!< |x|, |y|; resolution 1.2e-7 m there
+  static constexpr double max_abs_heading_rad = 1e6;   //!< |psi|; resolution 1.2e-10 rad there
+  static constexpr double max_abs_speed_mps = 1e3;
+  static constexpr double max_abs_acceleration_mps2 = 1e4;
+  static constexpr double max_period_s = 1e3;  //!< period in (0, max_period_s]
+};
+
+//! True if every value of `input` is finite and within ControllerInputRange.
+inline bool input_in_range(const ControllerInput& input) noexcept {
+  using R = ControllerInputRange;
+  auto within = [](double value, double bound) { return std::abs(value) <= bound; };  // NaN: no
+  return within(input.rear_axle_position.x, R::max_abs_coordinate_m) &&
+         within(input.rear_axle_position.y, R::max_abs_coordinate_m) &&
+         within(input.heading_rad, R::max_abs_heading_rad) &&
+         within(input.speed_mps, R::max_abs_speed_mps) &&
+         within(input.acceleration_mps2, R::max_abs_acceleration_mps2) && input.period_s > 0.0 &&
+         input.period_s <= R::max_period_s;
+}
+
+//! True if the command, its derivatives and every diagnostic are finite.
+inline bool all_finite(const ControllerOutput& output) noexcept {
+  // Every field of TrackingDiagnostics is a double, so it reads as an array of them; a field
+  // added later is checked too.
+  constexpr std::size_t count = sizeof(TrackingDiagnostics) / sizeof(double);
+  static_assert(count * sizeof(double) == sizeof(TrackingDiagnostics),
+                "TrackingDiagnostics must hold doubles only (all_finite reads it as an array)");
+  bool finite = std::isfinite(output.steering_angle_rad) &&
+                std::isfinite(output.steering_rate_radps) &&
+                std::isfinite(output.steering_acceleration_radps2);
+  for (double value : std::bit_cast<std::array<double, count>>(output.diagnostics)) {
+    finite = finite && std::isfinite(value);
+  }
+  return finite;
+}
+
 //! Interface of every steering controller in the library. update() is noexcept, allocation-free
-//! and deterministic; on invalid input it returns an error status and leaves the output unchanged.
+//! and deterministic. It checks what every controller must guarantee, so that no controller can
+//! miss it: an input outside ControllerInputRange gives invalid_input, a non-finite result gives
+//! numerical_error (and a reset to the last command), and in both cases and for any other error
+//! the output stays unchanged. Status::ok always comes with a finite output.
 class SteeringController {
  public:
   virtual ~SteeringController() = default;
-  virtual Status update(const ControllerInput& input, ControllerOutput& output) noexcept = 0;
+  Status update(const ControllerInput& input, ControllerOutput& output) noexcept {
+    if (!input_in_range(input)) return Status::invalid_input;
+    ControllerOutput computed = output;
+    const Status status = compute_command(input, computed);
+    if (status != Status::ok) return status;
+    if (!all_finite(computed)) {
+      reset(output.steering_angle_rad);
+      return Status::numerical_error;
+    }
+    output = computed;
+    return Status::ok;
+  }
   //! Restarts from rest with the measured steering angle of the real vehicle [rad].
   virtual void reset(double measured_steering_angle_rad = 0.0) noexcept = 0;
   virtual const char* name() const noexcept = 0;
@@ -79,6 +135,12 @@ class SteeringController {
     (void)lead_curvature_disturbance;
     return false;
   }
+
+ protected:
+  //! The controller's own step, called by update() with an input in range; `output` holds the
+  //! previous output on entry. noexcept and allocation-free.
+  virtual Status compute_command(const ControllerInput& input,
+                                 ControllerOutput& output) noexcept = 0;
 };
 
 }  // namespace smoothsteer

@@ -15,6 +15,7 @@
 
 #include <string>
 #include <vector>
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -39,8 +40,13 @@ struct ReachingProblem {
   //! Runs Ipopt's finite-difference derivative test (printing) before solving; for development.
   bool check_derivatives = false;
 
-  //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 struct ReachingSolution {

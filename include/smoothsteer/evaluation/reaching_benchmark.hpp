@@ -19,6 +19,7 @@
 #include "smoothsteer/evaluation/paper_figures.hpp"
 #include "smoothsteer/evaluation/results_table.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -33,7 +34,13 @@ struct ReachingBenchmarkOptions {
   double period_s = 0.002;              //!< control period [s]
   double horizon_m = 20.0;              //!< simulated travel [m]
   int intervals = 150;                  //!< collocation intervals of the optimum
-  void validate() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 struct ReachingBenchmarkCase {

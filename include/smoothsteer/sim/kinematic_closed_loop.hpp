@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 namespace smoothsteer {
@@ -32,6 +33,7 @@ struct KinematicTraceSample {
 
 struct KinematicLoopResult {
   Status status = Status::ok;
+  KinematicLoopOptions options;  //!< the options of the run
   std::vector<KinematicTraceSample> trace;
   double final_lateral_error_m = 0.0;
   double final_heading_error_rad = 0.0;
@@ -48,6 +50,13 @@ KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, co
 
 //! Writes the trace as CSV (columns documented in docs/controller.md) to `file_path` via a
 //! temporary file and rename, so that no half-written file is left behind.
+//! A sample of the kinematic loop as a sample of the kinetic simulation (sim/simulation.hpp), so
+//! that it can be written as `smoothsteer run`'s trace.csv (io::TraceCsvWriter; the demo does).
+//! The kinematic car has no actuator and no tires: delta_actual* repeat delta_cmd*, side slip
+//! and vy are 0, e_measured is e, and the yaw rate is v (tan(delta) / lambda_veh + kappa_d).
+TraceSample kinematic_trace_sample(const KinematicTraceSample& sample,
+                                   const KinematicLoopOptions& options) noexcept;
+
 void write_kinematic_trace_csv(const KinematicLoopResult& result, const std::string& file_path);
 
 }  // namespace smoothsteer

@@ -85,6 +85,8 @@ struct Metrics {
   double actual_acceleration_rms_radps2 = 0.0;
   int actual_rate_violations = 0;
   int actual_acceleration_violations = 0;
+  //! RMS of the rear axle's lateral error e over all rows (start included) [m].
+  double rms_rear_error_m = 0.0;
 };
 
 //! Reduces a trace one sample at a time: the same numbers as compute_metrics() without
@@ -108,7 +110,7 @@ class MetricsAccumulator {
   long first_reached_ = 0;  //!< one past the last sample with |e_lead| >= threshold
   double last_time_s_ = 0.0, last_command_rad_ = 0.0, last_held_rate_radps_ = 0.0;
   Spread command_rate_, command_acceleration_, actual_rate_, actual_acceleration_;
-  Spread held_rate_, held_acceleration_;
+  Spread held_rate_, held_acceleration_, rear_error_;
 };
 
 Metrics compute_metrics(const std::vector<TraceSample>& trace, const MetricsParameters& parameters);

@@ -6,6 +6,7 @@
 //! measurement and a matched curvature disturbance. Definitions: docs/simulation.md.
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -119,13 +120,15 @@ struct TraceSample {
   double yaw_rate_radps = 0.0;
 };
 
-//! Number of columns of a trace row.
-inline constexpr std::size_t trace_column_count = 27;
-//! Column names of a trace row (docs/cli.md), in the order of trace_row().
-const std::array<const char*, trace_column_count>& trace_column_names() noexcept;
-//! The sample's values in the order of trace_column_names(): one definition for the CSV writer
-//! and the NaN check of the metrics.
-std::array<double, trace_column_count> trace_row(const TraceSample& sample) noexcept;
+//! Number of values of a TraceSample: every field is a double.
+inline constexpr std::size_t trace_sample_size = sizeof(TraceSample) / sizeof(double);
+static_assert(trace_sample_size * sizeof(double) == sizeof(TraceSample),
+              "TraceSample must hold doubles only (trace_values reads it as an array)");
+//! Every value of the sample in declaration order, for finiteness checks; a field added later is
+//! included. The CSV columns, their names and order belong to io (smoothsteer/io/trace_csv.hpp).
+inline std::array<double, trace_sample_size> trace_values(const TraceSample& sample) noexcept {
+  return std::bit_cast<std::array<double, trace_sample_size>>(sample);
+}
 
 struct SimulationResult {
   Status status = Status::ok;  //!< first non-ok controller status (the run stops there)

@@ -21,6 +21,7 @@
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/tuning/static_map.hpp"
 #include "smoothsteer/tuning/vehicle_limits.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -65,7 +66,13 @@ struct TuningOptions {
   double k_rob_ceiling = 0.95;  //!< infeasible when the required k_rob reaches this
   //! Template for every other controller field (surface, cornering target, sub-steps).
   ControllerParameters base{};
-  void validate() const;  //!< throws std::invalid_argument naming field, value and rule
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 //! Paper Sec. III "velocity regions", labelled by which limits are active at the optimum.

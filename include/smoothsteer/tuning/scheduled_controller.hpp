@@ -17,7 +17,10 @@ class ScheduledController final : public SteeringController {
   //! Throws std::invalid_argument for an empty schedule or a null path.
   ScheduledController(GainSchedule schedule, std::shared_ptr<const Path> path);
 
-  Status update(const ControllerInput& input, ControllerOutput& output) noexcept override;
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
+ public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "scheduled_lead_wheel"; }
 

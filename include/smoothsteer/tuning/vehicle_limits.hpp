@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <string>
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 
@@ -18,10 +19,13 @@ struct VehicleLimits {
   //! tuner keeps the rear axle's curvature bound kbar_0 <= this / v^2 at every speed.
   double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();
 
-  //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
-  void validate() const;
-  //! Same checks without throwing: empty when valid.
-  std::string validation_error() const;
+  //! The first rule broken (validation.hpp); is_valid(), validation_error() and validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  //! Empty when valid, else "<Struct>: <field> = <value> <rule>".
+  std::string validation_error() const { return describe(first_violation()); }
+  //! Throws std::invalid_argument with validation_error().
+  void validate() const { throw_if_violated(first_violation()); }
 };
 
 }  // namespace smoothsteer

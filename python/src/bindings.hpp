@@ -1,0 +1,50 @@
+#pragma once
+// The pieces of the Python module _smoothsteer (python/smoothsteer/__init__.py re-exports them).
+// One function per part of the library; module.cpp calls them in order, so that a class is
+// registered before the functions that take it.
+
+#include <pybind11/pybind11.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "smoothsteer/math/vec2.hpp"
+#include "smoothsteer/status.hpp"
+
+namespace smoothsteer::python {
+
+namespace py = pybind11;
+
+//! A real-time call returned an error status; Python sees smoothsteer.ControllerError.
+class ControllerError : public std::runtime_error {
+ public:
+  explicit ControllerError(Status status)
+      : std::runtime_error(std::string("update() returned ") + to_string(status)) {}
+};
+
+//! ConfigError, InfeasibleLimits and ControllerError as Python exceptions.
+void bind_errors(py::module_& m);
+//! Path, PathPoint, PathProjection, PathBuilder.
+void bind_path(py::module_& m);
+//! ControllerParameters, ControllerOutput, SteeringController, LeadWheelController.
+void bind_controller(py::module_& m);
+//! The comparison controllers (baselines/comparison_controllers.hpp).
+void bind_baselines(py::module_& m);
+//! VehicleLimits, tune(), parameters_for_vehicle(), ScheduledController.
+void bind_tuning(py::module_& m);
+//! KinematicSingleTrack, Gear, PathPlan, CuspSequencer.
+void bind_cusps(py::module_& m);
+//! simulate_kinematic(): the kinematic closed loop.
+void bind_kinematic_loop(py::module_& m);
+//! solve_optimal_reaching(), HosmController, ReachingBenchmarkOptions.
+void bind_evaluation(py::module_& m);
+//! load_scenario(), run_scenario(), Scenario.
+void bind_scenario(py::module_& m);
+
+//! A point from any sequence of two numbers (tuple, list, numpy array); TypeError otherwise.
+Vec2 to_vec2(const py::handle& point, const char* argument);
+//! Sets the attributes of `target` (a bound object) from keyword arguments; an unknown name
+//! raises TypeError naming it and the class.
+void set_attributes(py::object& target, const py::kwargs& keywords);
+
+}  // namespace smoothsteer::python

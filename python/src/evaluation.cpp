@@ -1,0 +1,100 @@
+// The reaching benchmark of Tab. roc_vx / Fig. benchmark_e (include/smoothsteer/evaluation/):
+// the numerically optimal manoeuvre (Ipopt), HOSM, and the benchmark's own settings.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <vector>
+
+#include "bindings.hpp"
+#include "smoothsteer/baselines/hosm_controller.hpp"
+#include "smoothsteer/evaluation/optimal_reaching.hpp"
+#include "smoothsteer/evaluation/reaching_benchmark.hpp"
+
+namespace smoothsteer::python {
+namespace {
+
+py::array_t<double> array(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+py::dict solve(const py::kwargs& keywords) {
+  py::object problem_object = py::cast(ReachingProblem{});
+  set_attributes(problem_object, keywords);
+  const ReachingProblem problem = problem_object.cast<ReachingProblem>();
+  ReachingSolution solution;
+  {
+    py::gil_scoped_release unlocked;  // Ipopt: a fraction of a second to seconds
+    solution = solve_optimal_reaching(problem);
+  }
+  py::dict result;
+  result["converged"] = solution.converged;
+  result["solver_status"] = solution.solver_status;
+  result["distance_m"] = solution.distance_m;
+  result["arc_length_m"] = array(solution.arc_length_m);
+  result["lateral_error_m"] = array(solution.lateral_error_m);
+  result["heading_rad"] = array(solution.heading_rad);
+  result["steering_rad"] = array(solution.steering_rad);
+  result["steering_rate_per_m"] = array(solution.steering_rate_per_m);
+  return result;
+}
+
+}  // namespace
+
+void bind_evaluation(py::module_& m) {
+  using R = ReachingProblem;
+  py::class_<R>(m, "ReachingProblem", "Optimal reaching under C1 and C2 (paper Sec. IV-B).")
+      .def(py::init<>())
+      .def_readwrite("wheelbase_m", &R::wheelbase_m, "lambda [m]")
+      .def_readwrite("steering_angle_bound_rad", &R::steering_angle_bound_rad, "C1 [rad]")
+      .def_readwrite("steering_rate_bound_per_m", &R::steering_rate_bound_per_m, "C2 [rad/m]")
+      .def_readwrite("initial_lateral_error_m", &R::initial_lateral_error_m, "e(0) [m]")
+      .def_readwrite("initial_heading_rad", &R::initial_heading_rad, "psi(0) [rad]")
+      .def_readwrite("initial_steering_rad", &R::initial_steering_rad, "delta(0) [rad]")
+      .def_readwrite("terminal_lateral_tolerance_m", &R::terminal_lateral_tolerance_m, "[m]")
+      .def_readwrite("terminal_heading_tolerance_rad", &R::terminal_heading_tolerance_rad, "[rad]")
+      .def_readwrite("terminal_steering_free", &R::terminal_steering_free)
+      .def_readwrite("intervals", &R::intervals)
+      .def_readwrite("max_iterations", &R::max_iterations)
+      .def_readwrite("tolerance", &R::tolerance)
+      .def_readwrite("exact_hessian", &R::exact_hessian);
+  m.def("solve_optimal_reaching", &solve,
+        "The shortest reaching manoeuvre (Ipopt) for ReachingProblem keyword fields: a dict with "
+        "distance_m [m], converged, and node arrays arc_length_m [m], lateral_error_m [m], "
+        "heading_rad [rad], steering_rad [rad], steering_rate_per_m [rad/m].");
+
+  using O = ReachingBenchmarkOptions;
+  py::class_<O>(m, "ReachingBenchmarkOptions", "Settings of the reaching benchmark.")
+      .def(py::init<>())
+      .def_readonly("wheelbase_m", &O::wheelbase_m, "lambda [m]")
+      .def_readonly("steering_angle_bound_rad", &O::steering_angle_bound_rad, "delta-bar [rad]")
+      .def_readonly("initial_lateral_error_m", &O::initial_lateral_error_m, "e(0) [m]")
+      .def_readonly("initial_headings_rad", &O::initial_headings_rad, "psi(0) [rad]")
+      .def_readonly("lateral_tolerance_m", &O::lateral_tolerance_m, "[m]")
+      .def_readonly("heading_tolerance_rad", &O::heading_tolerance_rad, "[rad]")
+      .def_readonly("speed_mps", &O::speed_mps, "[m/s]")
+      .def_readonly("period_s", &O::period_s, "[s]")
+      .def_readonly("horizon_m", &O::horizon_m, "[m]");
+
+  py::class_<HosmController, SteeringController>(
+      m, "HosmController", "The constrained higher-order sliding-mode controller of Sec. IV-B.")
+      .def(py::init([](std::shared_ptr<Path> path, double wheelbase_m,
+                       double steering_angle_bound_rad, double steering_rate_bound_per_m,
+                       double heading_bound_rad, double substep_m) {
+             HosmParameters parameters;
+             parameters.wheelbase_m = wheelbase_m;
+             parameters.steering_angle_bound_rad = steering_angle_bound_rad;
+             parameters.steering_rate_bound_per_m = steering_rate_bound_per_m;
+             parameters.heading_bound_rad = heading_bound_rad;
+             parameters.substep_m = substep_m;
+             return std::make_unique<HosmController>(parameters, std::move(path));
+           }),
+           py::arg("path"), py::arg("wheelbase_m"), py::arg("steering_angle_bound_rad"),
+           py::arg("steering_rate_bound_per_m"), py::arg("heading_bound_rad"),
+           py::arg("substep_m") = 0.01,
+           "lambda [m], delta-bar [rad], delta-bar' [rad/m], psi-bar [rad], sub-step [m].");
+}
+
+}  // namespace smoothsteer::python

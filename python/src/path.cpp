@@ -1,0 +1,142 @@
+// Path, PathBuilder, PathPoint, PathProjection (include/smoothsteer/path/).
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_builder.hpp"
+
+namespace smoothsteer::python {
+namespace {
+
+std::vector<Vec2> waypoints_from(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& points) {
+  if (points.ndim() != 2 || points.shape(1) != 2) {
+    throw py::value_error("Path.from_waypoints: waypoints must be an N x 2 array of x, y [m]");
+  }
+  std::vector<Vec2> waypoints(static_cast<std::size_t>(points.shape(0)));
+  const auto view = points.unchecked<2>();
+  for (py::ssize_t i = 0; i < points.shape(0); ++i) {
+    waypoints[static_cast<std::size_t>(i)] = {view(i, 0), view(i, 1)};
+  }
+  return waypoints;
+}
+
+//! evaluate() on an array of arc lengths: N x 4 columns x, y, heading, curvature.
+py::array_t<double> sample(const Path& path, const py::array_t<double, py::array::forcecast>& s) {
+  const auto input = s.unchecked();
+  py::array_t<double> result({input.size(), py::ssize_t{4}});
+  auto out = result.mutable_unchecked<2>();
+  const double* values = s.data();
+  for (py::ssize_t i = 0; i < input.size(); ++i) {
+    const PathPoint point = path.evaluate(values[i]);
+    out(i, 0) = point.position.x;
+    out(i, 1) = point.position.y;
+    out(i, 2) = point.heading_rad;
+    out(i, 3) = point.curvature;
+  }
+  return result;
+}
+
+}  // namespace
+
+void bind_path(py::module_& m) {
+  py::class_<PathPoint>(m, "PathPoint", "A point on the path.")
+      .def_property_readonly(
+          "position", [](const PathPoint& p) { return py::make_tuple(p.position.x, p.position.y); },
+          "(x, y) [m]")
+      .def_readonly("heading_rad", &PathPoint::heading_rad, "tangent direction [rad]")
+      .def_readonly("curvature", &PathPoint::curvature, "[1/m], positive turning left")
+      .def("__repr__", [](const PathPoint& p) {
+        return "PathPoint(x=" + std::to_string(p.position.x) +
+               ", y=" + std::to_string(p.position.y) +
+               ", heading_rad=" + std::to_string(p.heading_rad) +
+               ", curvature=" + std::to_string(p.curvature) + ")";
+      });
+
+  py::class_<PathProjection>(m, "PathProjection", "Closest point of the path to a point.")
+      .def_readonly("arc_length_m", &PathProjection::arc_length_m, "s of the closest point [m]")
+      .def_readonly("lateral_error_m", &PathProjection::lateral_error_m,
+                    "signed distance, left of the path positive [m]")
+      .def_readonly("heading_rad", &PathProjection::heading_rad, "path tangent there [rad]")
+      .def_readonly("curvature", &PathProjection::curvature, "path curvature there [1/m]")
+      .def_property_readonly(
+          "closest_point",
+          [](const PathProjection& p) {
+            return py::make_tuple(p.closest_point.x, p.closest_point.y);
+          },
+          "(x, y) [m]");
+
+  py::class_<Path, std::shared_ptr<Path>>(m, "Path",
+                                          "A reference path (lines, arcs, circles, C2 splines). "
+                                          "Arc length s [m] starts at 0; e is positive left.")
+      .def_static(
+          "from_waypoints",
+          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& xy) {
+            return std::make_shared<Path>(Path::from_waypoints(waypoints_from(xy)));
+          },
+          py::arg("waypoints"),
+          "C2 natural cubic spline through an N x 2 array of waypoints x, y [m].")
+      .def_static(
+          "circle",
+          [](const py::object& center, double radius_m, bool counter_clockwise,
+             double start_angle_rad) {
+            return std::make_shared<Path>(Path::circle(to_vec2(center, "center"), radius_m,
+                                                       counter_clockwise, start_angle_rad));
+          },
+          py::arg("center"), py::arg("radius_m"), py::arg("counter_clockwise") = true,
+          py::arg("start_angle_rad") = 0.0,
+          "A closed circle of radius_m [m] around center (x, y) [m], starting at the "
+          "point at start_angle_rad [rad]; counter_clockwise turns left.")
+      .def_static(
+          "straight_line",
+          [](const py::object& start, double heading_rad, double length_m) {
+            return std::make_shared<Path>(
+                Path::straight_line(to_vec2(start, "start"), heading_rad, length_m));
+          },
+          py::arg("start"), py::arg("heading_rad"), py::arg("length_m") = 100.0,
+          "A line from start (x, y) [m] along heading_rad [rad], length_m [m] long; both "
+          "ends extend along the tangent.")
+      .def_property_readonly("length_m", &Path::length, "length [m]")
+      .def_property_readonly("is_closed", &Path::is_closed)
+      .def_property_readonly("segment_count", &Path::segment_count)
+      .def_property_readonly("max_abs_curvature", &Path::max_abs_curvature,
+                             "largest |curvature| [1/m]")
+      .def("evaluate", &Path::evaluate, py::arg("arc_length_m"),
+           "PathPoint at arc length s [m] (wrapped if closed, extended along the tangent if open).")
+      .def("sample", &sample, py::arg("arc_length_m"),
+           "evaluate() on an array of arc lengths [m]: an N x 4 array of x [m], y [m], heading "
+           "[rad], curvature [1/m].")
+      .def(
+          "project",
+          [](const Path& path, const py::object& point) {
+            return path.project(to_vec2(point, "point"));
+          },
+          py::arg("point"), "Global closest-point projection of (x, y) [m]: a PathProjection.");
+
+  py::class_<PathBuilder>(m, "PathBuilder",
+                          "Builds a line/arc path piece by piece from a start pose: "
+                          "PathBuilder((0, 0), 0.0).line(10).arc(5, pi / 2).build().")
+      .def(py::init([](const py::object& start, double heading_rad) {
+             return PathBuilder(to_vec2(start, "start"), heading_rad);
+           }),
+           py::arg("start"), py::arg("heading_rad"), "start (x, y) [m], heading [rad]")
+      .def("line", &PathBuilder::line, py::arg("length_m"),
+           py::return_value_policy::reference_internal, "Appends a straight piece of length_m [m].")
+      .def("arc", &PathBuilder::arc, py::arg("radius_m"), py::arg("angle_rad"),
+           py::return_value_policy::reference_internal,
+           "Appends an arc of radius_m [m] turning by angle_rad [rad] (> 0 left).")
+      .def(
+          "build",
+          [](const PathBuilder& builder, bool closed) {
+            return std::make_shared<Path>(builder.build(closed));
+          },
+          py::arg("closed") = false, "The Path of the pieces so far.");
+}
+
+}  // namespace smoothsteer::python

@@ -1,0 +1,93 @@
+#include "smoothsteer/evaluation/certified_route.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "smoothsteer/tuning/path_demand.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
+
+namespace smoothsteer {
+
+namespace {
+
+constexpr double speed_step_mps = 0.5;  // the step of the committed schedules (scenarios/*.yaml)
+constexpr double gravity_mps2 = 9.81;   // as load_vehicle_limits
+
+//! The options of the scenario's committed schedule: its template (`base`) and its order.
+TuningOptions scenario_schedule_options(const io::Scenario& scenario) {
+  const std::unique_ptr<SteeringController> own = io::make_controller(scenario);
+  const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
+  if (scheduled == nullptr) {
+    throw std::invalid_argument(scenario.file + ": key 'controller.type': the certified route " +
+                                "needs a scheduled_lead_wheel, not '" + own->name() + "'");
+  }
+  return scheduled->schedule().options();
+}
+
+}  // namespace
+
+VehicleLimits vehicle_limits_of(const io::Scenario& scenario) {
+  const VehicleParameters& v = scenario.vehicle;
+  VehicleLimits limits;
+  limits.wheelbase_m = v.wheelbase_m();
+  limits.max_steering_angle_rad = v.max_steering_angle_rad;
+  limits.max_steering_rate_radps = v.max_steering_rate_radps;
+  limits.max_steering_acceleration_radps2 = v.max_steering_acceleration_radps2;
+  limits.max_lateral_acceleration_mps2 =
+      std::min(v.front_tire.friction_mu, v.rear_tire.friction_mu) * gravity_mps2;
+  return limits;
+}
+
+std::vector<double> certified_speed_grid(const io::Scenario& scenario) {
+  const double top =
+      std::max(scenario.speed.initial_speed_mps,
+               scenario.speed.acceleration_mps2 > 0.0 ? scenario.speed.final_speed_mps : 0.0);
+  // One step beyond: parameters_at() blends each interval's upper entry with the next one.
+  const double last = std::ceil(top / speed_step_mps) * speed_step_mps + speed_step_mps;
+  return speed_grid(speed_step_mps, last, speed_step_mps);
+}
+
+TuningOptions certified_route_options(const io::Scenario& scenario,
+                                      const std::vector<std::pair<std::string, double>>& knobs) {
+  const TuningOptions committed = scenario_schedule_options(scenario);
+  TuningOptions options;
+  options.certificate = Certificate::feedforward;
+  options.base = committed.base;
+  options.order = committed.order;
+  const PathDemand demand = path_demand(*scenario.path);
+  options.path_curvature_bound = demand.max_curvature;
+  options.path_curvature_rate_bound = demand.max_curvature_rate;
+  if (scenario.speed.acceleration_mps2 > 0.0 &&
+      scenario.speed.final_speed_mps != scenario.speed.initial_speed_mps) {
+    options.max_longitudinal_acceleration_mps2 = scenario.speed.acceleration_mps2;
+  }
+  for (const auto& [key, value] : knobs) {
+    if (key == "feedforward_rate_share") {
+      options.feedforward_rate_share = value;
+    } else if (key == "k_rob_floor") {
+      options.k_rob_floor = value;
+    } else if (key == "switching_floor_share") {
+      options.switching_floor_share = value;
+    } else if (key == "feedforward_rate_margin") {
+      options.feedforward_rate_margin = value;
+    } else if (key == "boundary_layer") {
+      options.base.boundary_layer = value;
+    } else {
+      throw std::invalid_argument("certified_route_options: '" + key +
+                                  "' is not a knob of the certified route (docs/baselines.md)");
+    }
+  }
+  options.validate();
+  return options;
+}
+
+std::unique_ptr<SteeringController> make_certified_controller(
+    const io::Scenario& scenario, const std::vector<std::pair<std::string, double>>& knobs) {
+  const TuningOptions options = certified_route_options(scenario, knobs);
+  GainSchedule schedule = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
+                                                       certified_speed_grid(scenario));
+  return std::make_unique<ScheduledController>(std::move(schedule), scenario.path);
+}
+
+}  // namespace smoothsteer
