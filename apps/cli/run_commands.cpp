@@ -50,6 +50,13 @@ void run(const RunOptions& options) {
       m.max_abs_front_error_after_reaching_m, m.max_abs_rear_error_after_reaching_m);
   std::printf("  max side slip %.4f rad, bound violations %d\n", m.max_abs_side_slip_rad,
               m.bound_violations);
+  if (m.path_friction_exceedances > 0) {
+    std::printf(
+        "  warning: the path asks more than the tires can give: v^2 |kappa| up to %.2f m/s^2 "
+        "against mu g = %.2f m/s^2 (%d steps)\n",
+        m.max_path_lateral_acceleration_mps2, scenario.metrics.friction_limit_mps2,
+        m.path_friction_exceedances);
+  }
   const bool ok = result.simulation.status == Status::ok && !result.simulation.non_finite;
   if (options.plot && ok) {
     write_path_csv(*scenario.path, out.file("path.csv").string());

@@ -184,6 +184,10 @@ void add_tune_command(CLI::App& app) {
       ->capture_default_str();
   tune->add_option("--path-curvature-rate", arguments->options.path_curvature_rate_bound,
                    "largest |d kappa/ds| of the path [1/m^2] (default: unknown, inf)");
+  tune->add_option("--feedforward-headroom", arguments->options.feedforward_headroom,
+                   "kbar_ff = this times the path's peak curvature, in [1, 3]: room for the "
+                   "rear-axle target and the dynamics preview")
+      ->capture_default_str();
   tune->add_option("--feedforward-rate-share", arguments->options.feedforward_rate_share,
                    "largest share of the certified rate budget the feedforward's curvature rate "
                    "may take (the switching part gets the rest)")

@@ -72,6 +72,33 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
       p.actuator_delay_s > ControllerParameters::max_actuator_delay_s) {
     return fail(text("actuator_delay_s"), p.actuator_delay_s, text("must be in [0, 1] s"));
   }
+  if (!std::isfinite(p.preview_time_s) || p.preview_time_s < 0.0 ||
+      p.preview_time_s > ControllerParameters::max_actuator_delay_s) {
+    return fail(text("preview_time_s"), p.preview_time_s, text("must be in [0, 1] s"));
+  }
+  if (!std::isfinite(p.rear_slip_gradient_s2pm) || p.rear_slip_gradient_s2pm < 0.0 ||
+      p.rear_slip_gradient_s2pm > ControllerParameters::max_rear_slip_gradient_s2pm) {
+    return fail(text("rear_slip_gradient_s2pm"), p.rear_slip_gradient_s2pm,
+                text("must be in [0, 0.1] s^2/m"));
+  }
+  if (!std::isfinite(p.disturbance_estimation_length_m) ||
+      (p.disturbance_estimation_length_m != 0.0 &&
+       (p.disturbance_estimation_length_m < 1.0 || p.disturbance_estimation_length_m > 1000.0))) {
+    return fail(text("disturbance_estimation_length_m"), p.disturbance_estimation_length_m,
+                text("must be 0 (off) or in [1, 1000] m"));
+  }
+  if (std::isnan(p.max_lateral_acceleration_mps2) || p.max_lateral_acceleration_mps2 <= 0.0) {
+    return fail(text("max_lateral_acceleration_mps2"), p.max_lateral_acceleration_mps2,
+                text("must be > 0 m/s^2 (+inf: no friction guard)"));
+  }
+  if (!std::isfinite(p.actuator_time_constant_s) || p.actuator_time_constant_s < 0.0 ||
+      p.actuator_time_constant_s > 0.5) {
+    return fail(text("actuator_time_constant_s"), p.actuator_time_constant_s,
+                text("must be in [0, 0.5] s"));
+  }
+  if (p.actuator_lag_count < 1 || p.actuator_lag_count > 3) {
+    return fail(text("actuator_lag_count"), p.actuator_lag_count, text("must be 1, 2 or 3"));
+  }
   if (!finite_positive(p.approach_angle_rad) ||
       p.approach_angle_rad > std::numbers::pi / 2.0 + 1e-12) {
     return fail(text("approach_angle_rad"), p.approach_angle_rad, text("must be in (0, pi/2]"));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
@@ -22,7 +23,8 @@ bool finite(double value) noexcept {
 bool valid_input(const ControllerInput& input) noexcept {
   return finite(input.rear_axle_position.x) && finite(input.rear_axle_position.y) &&
          finite(input.heading_rad) && finite(input.speed_mps) && finite(input.acceleration_mps2) &&
-         finite(input.period_s) && input.period_s > 0.0;
+         finite(input.period_s) && input.period_s > 0.0 &&
+         std::abs(input.rear_axle_side_slip_rad) <= ControllerInput::max_side_slip_rad;
 }
 
 }  // namespace
@@ -41,10 +43,12 @@ void LeadWheelController::apply_parameters(const ControllerParameters& parameter
   bounds_ = compute_chain_bounds(parameters_);
   certificate_ = feedforward_certificate(parameters_, bounds_);
   chain_length_squared_ = 0.0;
+  chain_reach_ = 0.0;
   double shortest = parameters_.order > 0 ? parameters_.wheelbases_m[0] : 0.0;
   for (int i = 0; i < parameters_.order; ++i) {
     const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared_ += lambda * lambda;
+    chain_reach_ += lambda;
     shortest = std::min(shortest, lambda);
   }
   largest_substep_m_ = parameters_.max_substep_fraction * shortest;
@@ -134,12 +138,22 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
 
 void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   direction_ = 1.0;
+  has_previous_pose_ = false;
+  disturbance_estimate_ = 0.0;
   command_history_count_ = 0;
   command_history_next_ = 0;
   rear_hint_.reset();
   front_hint_.reset();
   lead_hint_.reset();
   initialise_chain(finite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0);
+}
+
+double LeadWheelController::friction_guard_curvature(double speed) const noexcept {
+  const double limit = parameters_.max_lateral_acceleration_mps2;
+  if (!std::isfinite(limit) || speed <= 0.0 || parameters_.order == 0) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return stationary_lead_curvature(limit / (speed * speed), chain_length_squared_);
 }
 
 double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
@@ -155,14 +169,28 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
   if (std::isfinite(rate) && rate > 0.0) {
     const double bound = std::max(parameters_.feedforward_curvature_bound(), 1e-12);
-    curvature = preview_curvature(*path_, lead.arc_length_m, kTargetCurveStep, rate, bound);
-  } else if (rear_target) {
-    curvature.before = path_->evaluate(lead.arc_length_m - kTargetCurveStep).curvature;
-    curvature.after = path_->evaluate(lead.arc_length_m + kTargetCurveStep).curvature;
+    curvature = preview_curvature(*path_, lead.arc_length_m + dynamics_preview_m_, kTargetCurveStep,
+                                  rate, bound);
+  } else if (rear_target || dynamics_preview_m_ > 0.0) {
+    const double s = lead.arc_length_m + dynamics_preview_m_;
+    if (dynamics_preview_m_ > 0.0) curvature.at = path_->evaluate(s).curvature;
+    curvature.before = path_->evaluate(s - kTargetCurveStep).curvature;
+    curvature.after = path_->evaluate(s + kTargetCurveStep).curvature;
   }
   if (!rear_target) return {0.0, 0.0, curvature.at};
-  return rear_axle_target_curve(curvature.before, curvature.at, curvature.after, kTargetCurveStep,
-                                chain_length_squared_);
+  // With a plant disturbance kappa_d the chain is stationary on kappa - kappa_d while the rear
+  // axle follows kappa: the lead wheel's offset is that of the chain's stationary shape,
+  // e0(kappa - kappa_d), minus the path's extra bend over the chain's reach l = sum lambda_i,
+  // kappa_d l^2 / 2
+  // (docs/feedforward.md, "disturbances on the vehicle"); the curve itself keeps the path's
+  // curvature.
+  const double d = disturbance_estimate_;
+  TargetCurve target =
+      rear_axle_target_curve(curvature.before - d, curvature.at - d, curvature.after - d,
+                             kTargetCurveStep, chain_length_squared_);
+  target.offset -= 0.5 * d * chain_reach_ * chain_reach_;
+  target.curvature += d;
+  return target;
 }
 
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
@@ -182,15 +210,47 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
   const double path_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
   const double error = state.projection.lateral_error_m - target_.offset;
   state.relative_heading = wrap_angle(path_heading - target_.heading);
+  // The plant adds kappa_d to every curvature of the chain: the lead wheel asks that much less.
   state.feedforward_target =
-      frenet_feedforward_curvature(target_.curvature, error, state.relative_heading);
+      frenet_feedforward_curvature(target_.curvature, error, state.relative_heading) -
+      disturbance_estimate_;
   state.law = dubins_switching_law(error, state.relative_heading,
                                    parameters_.switching_curvature_bound(), parameters_);
   return state;
 }
 
+void LeadWheelController::update_disturbance_estimate(const ControllerInput& input) noexcept {
+  const double length = parameters_.disturbance_estimation_length_m;
+  const double course = input.heading_rad + input.rear_axle_side_slip_rad;
+  if (length > 0.0 && has_previous_pose_ && command_history_count_ > 0 && direction_ > 0.0 &&
+      input.speed_mps > 0.0) {
+    const double distance = norm(input.rear_axle_position - previous_position_);
+    if (distance > 1e-6) {
+      // The steering in effect over the last period: issued `actuator_delay_s` earlier.
+      const auto age = std::min<std::size_t>(
+          command_history_count_ - 1,
+          static_cast<std::size_t>(std::lround(parameters_.actuator_delay_s / input.period_s)));
+      const double commanded_steering =
+          command_history_[(command_history_next_ + command_history_size - 1 - age) %
+                           command_history_size]
+              .steering_rad;
+      const double commanded = std::tan(commanded_steering) / parameters_.vehicle_wheelbase_m;
+      const double measured = wrap_angle(course - previous_course_) / distance;
+      const double gain = std::min(1.0, distance / length);
+      const double bound = parameters_.feedforward_curvature_bound();
+      disturbance_estimate_ =
+          std::clamp(disturbance_estimate_ + gain * (measured - commanded - disturbance_estimate_),
+                     -bound, bound);
+    }
+  }
+  previous_position_ = input.rear_axle_position;
+  previous_course_ = course;
+  has_previous_pose_ = true;
+}
+
 Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const noexcept {
-  Pose2 pose{input.rear_axle_position, input.heading_rad};
+  // The law steers the rear axle's course psi + beta_r (the kinematic model's heading).
+  Pose2 pose{input.rear_axle_position, input.heading_rad + input.rear_axle_side_slip_rad};
   const double delay = parameters_.actuator_delay_s;
   if (delay <= 0.0 || command_history_count_ == 0) return pose;
   // The steering in effect during the next `delay` seconds is what was commanded during the last
@@ -227,6 +287,11 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     direction_ = sign(input.speed_mps);
     initialise_chain(last_steering_angle_);
   }
+  update_disturbance_estimate(input);
+  // Where the feedforward reads the path (ControllerParameters::preview_time_s).
+  const double speed_magnitude = std::abs(input.speed_mps);
+  dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude +
+                        parameters_.rear_slip_gradient_s2pm * speed_magnitude * speed_magnitude;
   // With a known actuator delay the law acts on the pose at which this command will take effect.
   const Pose2 law_pose = predicted_pose(input);
 
@@ -246,7 +311,10 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   double heading = travel_heading(law_pose.heading_rad);
   LeadWheelState first{};
   double applied_curvature = 0.0;
-  const double feedforward_bound = parameters_.feedforward_curvature_bound();
+  // Friction guard: the lead curvature whose stationary rear-axle curvature is a_max / v^2.
+  const double guard = friction_guard_curvature(std::abs(input.speed_mps));
+  const double feedforward_bound = std::min(parameters_.feedforward_curvature_bound(), guard);
+  const double switching_bound = parameters_.switching_curvature_bound();
   const double feedforward_step =
       step_length > 0.0 ? parameters_.feedforward_curvature_rate * step_length : 0.0;
   for (int step = 0; step < steps; ++step) {
@@ -259,7 +327,15 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
         std::clamp(lead.feedforward_target, -feedforward_bound, feedforward_bound);
     feedforward_curvature_ +=
         std::clamp(wanted - feedforward_curvature_, -feedforward_step, feedforward_step);
-    const double switching = lead.law.curvature + matched_disturbance_;
+    double switching = lead.law.curvature + matched_disturbance_;
+    if (guard < parameters_.lead_curvature_bound) {
+      // |kappa_ff + kappa_sw| <= guard where kappa_sw can reach it; while kappa_ff still ramps
+      // down into the guard, kappa_sw pulls with its full authority.
+      const double low = std::max(-guard - feedforward_curvature_, -switching_bound);
+      const double high = std::min(guard - feedforward_curvature_, switching_bound);
+      switching = low <= high ? std::clamp(switching, low, high)
+                              : (feedforward_curvature_ > 0.0 ? -switching_bound : switching_bound);
+    }
     applied_curvature = feedforward_curvature_ + switching;
     if (n == 0 || step_length <= 0.0) break;
     const double front_before = angles_[0];
@@ -312,6 +388,25 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
                           parameters_.vehicle_wheelbase_m * unit_from_heading(input.heading_rad);
   const PathProjection front_projection = path_->project(front_axle, front_hint_);
 
+  // Actuator inversion (ControllerParameters::actuator_time_constant_s): the command leads the
+  // chain's delta_veh, which the actuator then reproduces. The history and the re-initialisation
+  // keep the chain's own delta_veh: that is what the actuator delivers.
+  const double lag = parameters_.actuator_time_constant_s;
+  if (lag > 0.0 && n >= 2) {
+    const double count = parameters_.actuator_lag_count;
+    const double a1 = count * lag;                              // a1 = m T
+    const double a2 = 0.5 * count * (count - 1.0) * lag * lag;  // a2 = C(m, 2) T^2
+    if (n == 2) {  // derivatives up to n - 1 = 1: the command's rate delta' + a1 delta''
+      steering += a1 * rate;
+      rate += a1 * acceleration;
+      acceleration = 0.0;
+      derivatives = 1;
+    } else {
+      steering += a1 * rate + a2 * acceleration;
+      rate = acceleration = 0.0;
+      derivatives = 0;
+    }
+  }
   output.steering_angle_rad = steering;
   output.steering_rate_radps = rate;
   output.steering_acceleration_radps2 = acceleration;

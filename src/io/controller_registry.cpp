@@ -1,6 +1,7 @@
 #include "smoothsteer/io/controller_registry.hpp"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <numbers>
@@ -20,7 +21,7 @@ namespace {
 //! the rear axle on curved paths); the wheelbases follow Sec. IV-A: the fictive wheelbase of
 //! eq. (cornering_constr).
 //! Keys shared by the fixed and the scheduled lead-wheel controller.
-void read_law_options(ConfigSection& c, ControllerParameters& p) {
+void read_law_options(ConfigSection& c, ControllerParameters& p, const VehicleParameters& vehicle) {
   // Defaults come from the C++ struct: a scenario key and its field cannot disagree.
   const ControllerParameters defaults;
   p.k_rob = c.number("k_rob", defaults.k_rob, {0.0, 1.0, false, true});
@@ -37,6 +38,23 @@ void read_law_options(ConfigSection& c, ControllerParameters& p) {
   }
   p.actuator_delay_s = c.number("actuator_delay_s", defaults.actuator_delay_s,
                                 {0.0, ControllerParameters::max_actuator_delay_s});
+  p.disturbance_estimation_length_m = c.number(
+      "disturbance_estimation_length_m", defaults.disturbance_estimation_length_m, {0.0, 1000.0});
+  p.preview_time_s = c.number("preview_time_s", defaults.preview_time_s,
+                              {0.0, ControllerParameters::max_actuator_delay_s});
+  // slip_preview: the feedforward looks K_r v^2 further ahead, K_r from the vehicle file.
+  p.rear_slip_gradient_s2pm = c.boolean("slip_preview", defaults.rear_slip_gradient_s2pm > 0.0)
+                                  ? std::min(vehicle.rear_slip_gradient(),
+                                             ControllerParameters::max_rear_slip_gradient_s2pm)
+                                  : 0.0;
+  // friction_guard: never ask more than the tires' mu g (vehicle file) of lateral acceleration.
+  p.max_lateral_acceleration_mps2 =
+      c.boolean("friction_guard", std::isfinite(defaults.max_lateral_acceleration_mps2))
+          ? vehicle.friction_limit_mps2()
+          : std::numeric_limits<double>::infinity();
+  p.actuator_time_constant_s =
+      c.number("actuator_time_constant_s", defaults.actuator_time_constant_s, {0.0, 0.5});
+  p.actuator_lag_count = c.integer("actuator_lag_count", defaults.actuator_lag_count, 1, 3);
   p.approach_angle_rad = c.number("approach_angle_rad", defaults.approach_angle_rad,
                                   {0.0, std::numbers::pi / 2.0, true, false});
   const bool paper_surface = defaults.surface == SlidingSurface::paper;
@@ -63,7 +81,7 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
   p.order = c.integer("order", defaults.order, 0, ControllerParameters::max_order);
   p.lead_curvature_bound =
       c.number("lead_curvature_bound", defaults.lead_curvature_bound, Range::positive());
-  read_law_options(c, p);
+  read_law_options(c, p, vehicle);
   // Wheelbases: explicit list, or the paper's choice: n = 1 -> lambda = lambda_veh (eq. ext1);
   // n = 2 -> lambda = sqrt(lambda_veh^2 - lambda_l^2) (eq. cornering_constr).
   if (c.has("wheelbases_m")) {
@@ -99,7 +117,7 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
                                                               const VehicleParameters& vehicle) {
   ControllerParameters base;
   base.vehicle_wheelbase_m = vehicle.wheelbase_m();
-  read_law_options(c, base);
+  read_law_options(c, base, vehicle);
   std::filesystem::path schedule_file = c.required_text("schedule");
   if (schedule_file.is_relative()) {
     schedule_file = std::filesystem::path(c.file()).parent_path() / schedule_file;

@@ -179,9 +179,23 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   p.stop_at_path_end = sim.boolean("stop_at_path_end", p.stop_at_path_end);
   p.stop_beyond_path_end_m = sim.number("stop_beyond_path_end_m", p.stop_beyond_path_end_m);
   p.matched_disturbance = sim.number("matched_disturbance", 0.0, {-1.0, 1.0});
+  p.plant_curvature_disturbance = sim.number("plant_curvature_disturbance", 0.0, {-1.0, 1.0});
   p.position_noise_std_m = sim.number("position_noise_std_m", 0.0, Range::non_negative());
   p.heading_noise_std_rad = sim.number("heading_noise_std_rad", 0.0, Range::non_negative());
   p.noise_seed = static_cast<std::uint64_t>(sim.integer("noise_seed", 1, 0, 2147483647));
+  ConfigSection slip = sim.section("side_slip");
+  SideSlipEstimation& estimation = p.side_slip;
+  const std::string source = slip.text("source", "none", {"none", "truth", "observer"});
+  estimation.source = source == "none"    ? SideSlipSource::none
+                      : source == "truth" ? SideSlipSource::truth
+                                          : SideSlipSource::observer;
+  estimation.cornering_stiffness_scale = slip.number("cornering_stiffness_scale", 1.0, {0.2, 5.0});
+  estimation.mass_scale = slip.number("mass_scale", 1.0, {0.2, 5.0});
+  estimation.yaw_rate_noise_std_radps = slip.number("yaw_rate_noise_std_radps", 0.0, {0.0, 1.0});
+  estimation.lateral_acceleration_noise_std_mps2 =
+      slip.number("lateral_acceleration_noise_std_mps2", 0.0, {0.0, 10.0});
+  slip.finish();
+  sim.store("side_slip", slip.resolved());
   sim.finish();
   check(sim, p);
   if (const std::string error = a.validation_error(p.substep_s); !error.empty()) {
@@ -210,6 +224,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   metrics.finish();
   s.metrics.steering_angle_limit_rad = s.vehicle.max_steering_angle_rad;
   s.metrics.steering_rate_limit_radps = s.vehicle.max_steering_rate_radps;
+  s.metrics.friction_limit_mps2 = s.vehicle.friction_limit_mps2();
 
   // Required (docs/scenarios.md): a file with only `name:` must not run on defaults.
   if (!c.has("path")) c.fail("path", "is required (e.g. path: {type: straight})");

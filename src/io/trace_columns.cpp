@@ -32,7 +32,9 @@ const std::array<const char*, trace_column_count>& trace_column_names() noexcept
                                                                      "delta_actual_acc",
                                                                      "side_slip",
                                                                      "vy",
-                                                                     "yaw_rate"};
+                                                                     "yaw_rate",
+                                                                     "beta_rear",
+                                                                     "beta_rear_input"};
   return names;
 }
 
@@ -61,7 +63,9 @@ std::array<double, trace_column_count> trace_row(const TraceSample& s) noexcept 
           s.steering_actual_acceleration_radps2,
           s.side_slip_rad,
           s.lateral_velocity_mps,
-          s.yaw_rate_radps};
+          s.yaw_rate_radps,
+          s.rear_side_slip_rad,
+          s.rear_side_slip_input_rad};
 }
 
 }  // namespace smoothsteer::io

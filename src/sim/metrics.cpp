@@ -39,6 +39,9 @@ std::optional<Violation> MetricsParameters::first_violation() const noexcept {
   if (!std::isfinite(violation_tolerance) || violation_tolerance < 0.0) {
     return bad("violation_tolerance", violation_tolerance, "must be finite and >= 0");
   }
+  if (!(friction_limit_mps2 > 0.0)) {
+    return bad("friction_limit_mps2", friction_limit_mps2, "must be > 0 (+inf: not counted)");
+  }
   return std::nullopt;
 }
 
@@ -109,6 +112,13 @@ void MetricsAccumulator::add(const TraceSample& s) {
   m_.max_abs_command_rad = std::max(m_.max_abs_command_rad, std::abs(s.steering_command_rad));
   m_.max_abs_actual_rad = std::max(m_.max_abs_actual_rad, std::abs(s.steering_actual_rad));
   m_.max_abs_side_slip_rad = std::max(m_.max_abs_side_slip_rad, std::abs(s.side_slip_rad));
+  m_.max_abs_rear_slip_input_error_rad =
+      std::max(m_.max_abs_rear_slip_input_error_rad,
+               std::abs(s.rear_side_slip_rad - s.rear_side_slip_input_rad));
+  const double path_demand = s.speed_mps * s.speed_mps * std::abs(s.path_curvature);
+  m_.max_path_lateral_acceleration_mps2 =
+      std::max(m_.max_path_lateral_acceleration_mps2, path_demand);
+  m_.path_friction_exceedances += path_demand > p.friction_limit_mps2 ? 1 : 0;
   const double tolerance = p.violation_tolerance;
   const bool angle = exceeds(s.steering_command_rad, p.steering_angle_limit_rad, tolerance);
   const bool rate = exceeds(s.steering_command_rate_radps, p.steering_rate_limit_radps, tolerance);
@@ -202,6 +212,9 @@ std::vector<std::pair<std::string, double>> metric_values(const Metrics& m) {
           {"max_abs_command_rad", m.max_abs_command_rad},
           {"max_abs_actual_rad", m.max_abs_actual_rad},
           {"max_abs_side_slip_rad", m.max_abs_side_slip_rad},
+          {"max_abs_rear_slip_input_error_rad", m.max_abs_rear_slip_input_error_rad},
+          {"max_path_lateral_acceleration_mps2", m.max_path_lateral_acceleration_mps2},
+          {"path_friction_exceedances", m.path_friction_exceedances},
           {"angle_violations", m.angle_violations},
           {"rate_violations", m.rate_violations},
           {"acceleration_violations", m.acceleration_violations},

@@ -9,6 +9,7 @@
 #include "plant_integration.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/sim/closed_loop_count.hpp"
+#include "smoothsteer/vehicle/side_slip_observer.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -25,6 +26,36 @@ bool all_finite(const TraceSample& sample) {
     if (!std::isfinite(v)) return false;
   }
   return true;
+}
+
+//! The rear axle's true side slip beta_r = atan((vy - lr r) / vx) (0 at standstill).
+double rear_axle_side_slip(const VehicleState& state, const VehicleParameters& car) {
+  if (std::abs(state.vx_mps) < 1e-6) return 0.0;
+  return std::atan((state.vy_mps - car.cg_to_rear_axle_m * state.yaw_rate_radps) / state.vx_mps);
+}
+
+//! One observer step on what a car's sensors would report now (with the configured noise);
+//! returns its beta_r estimate, clamped to what the controller accepts.
+template <typename Noise>
+double observe_rear_axle_side_slip(SideSlipObserver& observer, const VehicleModel& vehicle,
+                                   const VehicleState& state, double steering_angle,
+                                   double longitudinal_acceleration, double period,
+                                   const SideSlipEstimation& slip, Noise&& noise) {
+  const VehicleState rates = vehicle.derivative(state, steering_angle, longitudinal_acceleration);
+  SideSlipMeasurement measurement;
+  measurement.speed_mps = state.vx_mps;
+  measurement.yaw_rate_radps = state.yaw_rate_radps;
+  measurement.lateral_acceleration_mps2 = rates.vy_mps + state.vx_mps * state.yaw_rate_radps;
+  measurement.steering_angle_rad = steering_angle;
+  if (slip.yaw_rate_noise_std_radps > 0.0) {
+    measurement.yaw_rate_radps += slip.yaw_rate_noise_std_radps * noise();
+  }
+  if (slip.lateral_acceleration_noise_std_mps2 > 0.0) {
+    measurement.lateral_acceleration_mps2 += slip.lateral_acceleration_noise_std_mps2 * noise();
+  }
+  if (observer.update(measurement, period) != Status::ok) return 0.0;
+  return std::clamp(observer.rear_axle_side_slip_rad(), -ControllerInput::max_side_slip_rad,
+                    ControllerInput::max_side_slip_rad);
 }
 
 }  // namespace
@@ -72,11 +103,35 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
   if (!std::isfinite(matched_disturbance) || std::abs(matched_disturbance) > 1.0) {
     return bad("matched_disturbance", matched_disturbance, "must be in [-1, 1] 1/m");
   }
+  if (!std::isfinite(plant_curvature_disturbance) || std::abs(plant_curvature_disturbance) > 1.0) {
+    return bad("plant_curvature_disturbance", plant_curvature_disturbance,
+               "must be in [-1, 1] 1/m");
+  }
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
     return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
   }
   if (!std::isfinite(heading_noise_std_rad) || heading_noise_std_rad < 0.0) {
     return bad("heading_noise_std_rad", heading_noise_std_rad, "must be finite and >= 0");
+  }
+  const int source = static_cast<int>(side_slip.source);
+  if (source < 0 || source > static_cast<int>(SideSlipSource::observer)) {
+    return bad("side_slip.source", source, "must be 0 (none), 1 (truth) or 2 (observer)");
+  }
+  if (!(side_slip.cornering_stiffness_scale >= 0.2 && side_slip.cornering_stiffness_scale <= 5.0)) {
+    return bad("side_slip.cornering_stiffness_scale", side_slip.cornering_stiffness_scale,
+               "must be in [0.2, 5]");
+  }
+  if (!(side_slip.mass_scale >= 0.2 && side_slip.mass_scale <= 5.0)) {
+    return bad("side_slip.mass_scale", side_slip.mass_scale, "must be in [0.2, 5]");
+  }
+  if (!(side_slip.yaw_rate_noise_std_radps >= 0.0 && side_slip.yaw_rate_noise_std_radps <= 1.0)) {
+    return bad("side_slip.yaw_rate_noise_std_radps", side_slip.yaw_rate_noise_std_radps,
+               "must be in [0, 1] rad/s");
+  }
+  if (!(side_slip.lateral_acceleration_noise_std_mps2 >= 0.0 &&
+        side_slip.lateral_acceleration_noise_std_mps2 <= 10.0)) {
+    return bad("side_slip.lateral_acceleration_noise_std_mps2",
+               side_slip.lateral_acceleration_noise_std_mps2, "must be in [0, 10] m/s^2");
   }
   return std::nullopt;
 }
@@ -126,9 +181,10 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   controller.reset(0.0);
   // Matched disturbance: into the controller's chain where it has one, else into the plant.
   const double plant_disturbance =
-      controller.set_matched_disturbance(parameters.matched_disturbance)
-          ? 0.0
-          : parameters.matched_disturbance;
+      parameters.plant_curvature_disturbance +
+      (controller.set_matched_disturbance(parameters.matched_disturbance)
+           ? 0.0
+           : parameters.matched_disturbance);
   const detail::PlantContext plant{vehicle,
                                    speed,
                                    actuator,
@@ -142,6 +198,17 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
 
   std::mt19937_64 engine(parameters.noise_seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);
+  const SideSlipEstimation& slip = parameters.side_slip;
+  SideSlipObserverParameters observer_parameters = SideSlipObserverParameters::from_vehicle(
+      car, slip.cornering_stiffness_scale, slip.mass_scale);
+  // The observer trusts its sensors as much as their simulated noise says (at least its
+  // defaults: a noise-free sensor would make the filter over-confident in the model's error).
+  observer_parameters.yaw_rate_noise_std_radps =
+      std::max(observer_parameters.yaw_rate_noise_std_radps, slip.yaw_rate_noise_std_radps);
+  observer_parameters.lateral_acceleration_noise_std_mps2 =
+      std::max(observer_parameters.lateral_acceleration_noise_std_mps2,
+               slip.lateral_acceleration_noise_std_mps2);
+  SideSlipObserver slip_observer(observer_parameters);
   ProjectionHint rear_hint, front_hint;
   ControllerOutput output;
   double distance = 0.0;
@@ -158,6 +225,14 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
       input.rear_axle_position.x += parameters.position_noise_std_m * unit_normal(engine);
       input.rear_axle_position.y += parameters.position_noise_std_m * unit_normal(engine);
       input.heading_rad += parameters.heading_noise_std_rad * unit_normal(engine);
+    }
+    const double true_rear_slip = rear_axle_side_slip(state, car);
+    if (slip.source == SideSlipSource::truth) {
+      input.rear_axle_side_slip_rad = true_rear_slip;
+    } else if (slip.source == SideSlipSource::observer) {
+      input.rear_axle_side_slip_rad = observe_rear_axle_side_slip(
+          slip_observer, vehicle, state, actuator.angle(), input.acceleration_mps2,
+          parameters.control_period_s, slip, [&] { return unit_normal(engine); });
     }
     const Status status = controller.update(input, output);
     if (status != Status::ok) {
@@ -201,6 +276,8 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     sample.steering_actual_rate_radps = actuator.rate(delayed_input);
     sample.steering_actual_acceleration_radps2 = actuator.acceleration(delayed_input);
     sample.side_slip_rad = side_slip_angle(state);
+    sample.rear_side_slip_rad = true_rear_slip;
+    sample.rear_side_slip_input_rad = input.rear_axle_side_slip_rad;
     sample.lateral_velocity_mps = state.vy_mps;
     sample.yaw_rate_radps = state.yaw_rate_radps;
     if (!all_finite(sample)) {

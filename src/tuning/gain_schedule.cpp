@@ -255,6 +255,8 @@ std::optional<Violation> TuningOptions::first_violation() const noexcept {
                 path_curvature_rate_bound, "must be >= 0 (+inf: unknown)");
   check.require(std::isfinite(feedforward_rate_margin) && feedforward_rate_margin >= 1.0,
                 "feedforward_rate_margin", feedforward_rate_margin, "must be finite and >= 1");
+  check.require(feedforward_headroom >= 1.0 && feedforward_headroom <= 3.0, "feedforward_headroom",
+                feedforward_headroom, "must be in [1, 3]");
   check.require(feedforward_rate_share > 0.0 && feedforward_rate_share < 1.0,
                 "feedforward_rate_share", feedforward_rate_share, "must be in (0, 1)");
   check.require(positive_finite(feedforward_ramp_length_m), "feedforward_ramp_length_m",

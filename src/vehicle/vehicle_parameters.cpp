@@ -1,5 +1,7 @@
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -35,10 +37,26 @@ std::optional<Violation> tire_violation(const char* prefix, const TireParameters
 
 }  // namespace
 
+double VehicleParameters::front_cornering_stiffness_npr() const noexcept {
+  return front_tire.normalized_cornering_stiffness() * front_axle_load_n();
+}
+
+double VehicleParameters::rear_cornering_stiffness_npr() const noexcept {
+  return rear_tire.normalized_cornering_stiffness() * rear_axle_load_n();
+}
+
 double VehicleParameters::understeer_gradient() const noexcept {
-  const double front = front_tire.normalized_cornering_stiffness() * front_axle_load_n();
-  const double rear = rear_tire.normalized_cornering_stiffness() * rear_axle_load_n();
-  return mass_kg / wheelbase_m() * (cg_to_rear_axle_m / front - cg_to_front_axle_m / rear);
+  return mass_kg / wheelbase_m() *
+         (cg_to_rear_axle_m / front_cornering_stiffness_npr() -
+          cg_to_front_axle_m / rear_cornering_stiffness_npr());
+}
+
+double VehicleParameters::friction_limit_mps2() const noexcept {
+  return std::min(front_tire.friction_mu, rear_tire.friction_mu) * gravity_mps2;
+}
+
+double VehicleParameters::rear_slip_gradient() const noexcept {
+  return mass_kg * cg_to_front_axle_m / (wheelbase_m() * rear_cornering_stiffness_npr());
 }
 
 std::optional<Violation> VehicleParameters::first_violation() const noexcept {

@@ -76,6 +76,35 @@ struct ControllerParameters {
   //! still in the pipe (a Smith predictor). At most max_actuator_delay_s.
   double actuator_delay_s = 0.0;
   static constexpr double max_actuator_delay_s = 1.0;
+  //! Dynamics preview (docs/vehicle_dynamics.md): the feedforward reads the path's curvature
+  //! d = preview_time_s |v| + rear_slip_gradient v^2 metres ahead of the lead wheel. On a
+  //! single-track car the rear axle's course lags its heading by the rear side slip
+  //! beta_r = -K_r a_y, K_r = m lf / (L Cr): in distance, a delay of K_r v^2 between the
+  //! steering and the course (with ControllerInput::rear_axle_side_slip_rad, which the law
+  //! steers). The preview only moves where kappa_ff looks, so |kappa_ff| <= kbar_ff and
+  //! |d kappa_ff / ds| <= L_ff, and the certificate, hold unchanged. 0 = off.
+  double preview_time_s = 0.0;  //!< [s], in [0, max_actuator_delay_s]
+  //! Disturbance estimation (docs/feedforward.md, "disturbances on the vehicle"): a curvature
+  //! the plant adds at the rear axle (understeer, a banked road, a steering offset) is estimated
+  //! as the measured course curvature minus the commanded one, low-passed over this distance [m],
+  //! and the feedforward aims the chain at the path's curvature minus it. The estimate enters
+  //! only through kappa_ff, so |kappa_ff| <= kbar_ff, its rate limit and the certificate hold.
+  //! 0 = off; else in [1, 1000] m.
+  double disturbance_estimation_length_m = 0.0;
+  double rear_slip_gradient_s2pm = 0.0;  //!< K_r [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
+  static constexpr double max_rear_slip_gradient_s2pm = 0.1;
+  //! Friction guard (docs/vehicle_dynamics.md): at speed v the lead wheel's curvature stays
+  //! within the curvature whose stationary rear-axle curvature is a_max / v^2, so the car never
+  //! asks more than a_max of its tires once the chain is stationary. kappa_ff moves into the
+  //! shrunken range at its rate limit L_ff; kappa_sw is clipped. +inf = off.
+  double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();
+  //! Steering-actuator inversion (paper Outlook; Klauer et al. 2020): for an actuator of
+  //! `actuator_lag_count` equal first-order lags with time constant T, (1 + T s)^m, the command
+  //! is delta + a1 delta' + ... with a_k = C(m, k) T^k, using the chain's derivatives up to
+  //! order n - 1 so that the command keeps a certified rate bound (docs/vehicle_dynamics.md).
+  //! 0 = off. The dead time is the Smith predictor's (actuator_delay_s).
+  double actuator_time_constant_s = 0.0;  //!< T = 1 / pole [s], in [0, 0.5]
+  int actuator_lag_count = 3;             //!< m, in [1, 3]
   //! kbar_ff = feedforward_share * kbar_n [1/m].
   double feedforward_curvature_bound() const noexcept {
     return feedforward_share * lead_curvature_bound;

@@ -70,6 +70,8 @@ class LeadWheelController final : public SteeringController {
   const SteeringCertificate& certificate() const noexcept { return certificate_; }
   //! Current kappa_ff [1/m] (rate limited and saturated, docs/feedforward.md).
   double feedforward_curvature() const noexcept { return feedforward_curvature_; }
+  //! The plant's curvature disturbance as estimated (0 unless disturbance_estimation_length_m).
+  double disturbance_estimate() const noexcept { return disturbance_estimate_; }
   const ChainAngles& chain_angles() const noexcept { return angles_; }
   //! +1 while driving forwards, -1 in reverse.
   double direction() const noexcept { return direction_; }
@@ -98,16 +100,27 @@ class LeadWheelController final : public SteeringController {
   void initialise_chain_on_feedforward(double feedforward_curvature) noexcept;
   double front_angle_from_vehicle(double vehicle_steering_angle) const noexcept;
   double vehicle_steering_angle_of_chain() const noexcept;
+  //! Low-pass of the measured minus the commanded rear-axle curvature
+  //! (ControllerParameters::disturbance_estimation_length_m).
+  void update_disturbance_estimate(const ControllerInput& input) noexcept;
+  //! Largest lead curvature the friction guard allows at `speed` [1/m] (+inf: no guard).
+  double friction_guard_curvature(double speed) const noexcept;
 
   ControllerParameters parameters_;
   std::shared_ptr<const Path> path_;
   ChainBounds bounds_;
   SteeringCertificate certificate_;
   double feedforward_curvature_ = 0.0;
-  TargetCurve target_;  //!< target curve of the current period
+  double dynamics_preview_m_ = 0.0;
+  double disturbance_estimate_ = 0.0;  //!< kappa_d estimate [1/m]
+  Vec2 previous_position_{};           //!< rear axle at the last update()
+  double previous_course_ = 0.0;       //!< psi + beta_r at the last update()
+  bool has_previous_pose_ = false;     //!< how far ahead the feedforward reads the path [m]
+  TargetCurve target_;                 //!< target curve of the current period
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
-  double largest_substep_m_ = 0.0;     //!< max_substep_fraction * min lambda_i [m]
+  double chain_reach_ = 0.0;  //!< sum lambda_i: how far ahead of the rear axle the lead wheel is
+  double largest_substep_m_ = 0.0;  //!< max_substep_fraction * min lambda_i [m]
   //! Commands of the last periods, newest last, for the delay compensation (actuator_delay_s):
   //! a ring buffer, so that update() does not allocate. 512 periods cover 1 s down to 2 ms.
   struct IssuedCommand {

@@ -21,6 +21,13 @@ struct ControllerInput {
   double speed_mps = 0.0;          //!< signed longitudinal speed v [m/s]; v < 0 reverses
   double acceleration_mps2 = 0.0;  //!< dv/dt [m/s^2]; enters d2(delta)/dt2 only
   double period_s = 0.02;          //!< control period dt [s]
+  //! beta_r: side slip of the rear axle [rad], the angle from the vehicle's heading to the
+  //! rear axle's velocity (atan((vy - l_r r) / vx) on a single-track model). The kinematic law
+  //! steers the direction of travel, which on a real car is the course psi + beta_r, not psi
+  //! (paper Outlook; docs/vehicle_dynamics.md). 0 (the default) is the kinematic assumption.
+  //! Measured by a slip sensor or estimated by SideSlipObserver. |beta_r| <= max_side_slip_rad.
+  double rear_axle_side_slip_rad = 0.0;
+  static constexpr double max_side_slip_rad = 0.5;
 };
 
 //! Diagnostics of the path-tracking state (all relative to the reference path).

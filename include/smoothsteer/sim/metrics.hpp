@@ -23,6 +23,9 @@ struct MetricsParameters {
   double steering_acceleration_limit_radps2 = std::numeric_limits<double>::infinity();
   //! Relative tolerance of the bound checks (a command exactly at the bound is no violation).
   double violation_tolerance = 1e-6;
+  //! Friction limit mu g [m/s^2] against which the path's own demand v^2 |kappa| is counted
+  //! (+inf: not counted).
+  double friction_limit_mps2 = std::numeric_limits<double>::infinity();
 
   //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
   std::optional<Violation> first_violation() const noexcept;
@@ -56,6 +59,12 @@ struct Metrics {
   double max_abs_command_rad = 0.0;
   double max_abs_actual_rad = 0.0;
   double max_abs_side_slip_rad = 0.0;
+  //! Largest |beta_r (true) - beta_r (given to the controller)|: the side-slip estimate's error.
+  double max_abs_rear_slip_input_error_rad = 0.0;
+  //! The path's own demand: largest v^2 |kappa_path| at the rear axle's closest point [m/s^2],
+  //! and the samples where it exceeds the friction limit (the path asks more than the tires).
+  double max_path_lateral_acceleration_mps2 = 0.0;
+  int path_friction_exceedances = 0;
   int angle_violations = 0;         //!< steps with |delta_cmd| above the angle limit
   int rate_violations = 0;          //!< steps with |d delta_cmd/dt| above the rate limit
   int acceleration_violations = 0;  //!< steps with |d2 delta_cmd/dt2| above its limit

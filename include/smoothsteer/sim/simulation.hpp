@@ -33,6 +33,27 @@ enum class PlantIntegrator {
   dopri5,
 };
 
+//! Where the controller's ControllerInput::rear_axle_side_slip_rad comes from (docs/
+//! vehicle_dynamics.md).
+enum class SideSlipSource {
+  none,      //!< 0: the kinematic assumption (course = heading)
+  truth,     //!< the plant's true rear-axle slip (an ideal slip sensor)
+  observer,  //!< SideSlipObserver on measured yaw rate, lateral acceleration, speed and delta
+};
+
+//! Side-slip estimation in the closed loop.
+struct SideSlipEstimation {
+  SideSlipSource source = SideSlipSource::none;
+  //! The observer's belief relative to the vehicle file (robustness study): cornering
+  //! stiffnesses and mass/yaw inertia times these factors.
+  double cornering_stiffness_scale = 1.0;
+  double mass_scale = 1.0;
+  //! Gaussian noise on the simulated sensors (the observer assumes the same stds, at least
+  //! its defaults).
+  double yaw_rate_noise_std_radps = 0.0;
+  double lateral_acceleration_noise_std_mps2 = 0.0;
+};
+
 struct SimulationParameters {
   double control_period_s = 0.02;  //!< controller period (50 Hz) [s]; a multiple of substep_s
   double substep_s = 0.001;        //!< RK4 step of the plant; delay-line resolution [s]
@@ -49,9 +70,13 @@ struct SimulationParameters {
   //! item 2) gets it there; for any other it bends the rear-axle path:
   //! tan(delta_eff) = tan(delta) + L kappa_d.
   double matched_disturbance = 0.0;
+  //! Curvature disturbance kappa_d [1/m] on the PLANT's rear axle, whatever the controller
+  //! (understeer, a banked road, a steering offset): tan(delta_eff) = tan(delta) + L kappa_d.
+  double plant_curvature_disturbance = 0.0;
   double position_noise_std_m = 0.0;   //!< std of Gaussian noise on x and y of the rear axle [m]
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
+  SideSlipEstimation side_slip;        //!< what the controller gets as the rear axle's slip
 
   //! Caps on what the input controls (issue 12, defect 3): control steps of one run
   //! (duration_s / control_period_s) and plant sub-steps (duration_s / substep_s).
@@ -88,7 +113,9 @@ struct TraceSample {
   double steering_actual_rad = 0.0;  //!< actuator output delta_actual
   double steering_actual_rate_radps = 0.0;
   double steering_actual_acceleration_radps2 = 0.0;
-  double side_slip_rad = 0.0;  //!< atan(vy / vx) at the CG
+  double side_slip_rad = 0.0;             //!< atan(vy / vx) at the CG
+  double rear_side_slip_rad = 0.0;        //!< true beta_r = atan((vy - lr r) / vx)
+  double rear_side_slip_input_rad = 0.0;  //!< beta_r given to the controller (estimate)
   double lateral_velocity_mps = 0.0;
   double yaw_rate_radps = 0.0;
 };

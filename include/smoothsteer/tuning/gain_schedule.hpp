@@ -50,6 +50,10 @@ struct TuningOptions {
   //! Largest |d kappa / ds| of the reference path [1/m^2] (+inf: unknown or with jumps); the
   //! feedforward's rate limit L_ff covers it with feedforward_rate_margin where the budget allows.
   double path_curvature_rate_bound = std::numeric_limits<double>::infinity();
+  //! kbar_ff = headroom * path_curvature_bound (where the friction and angle limits allow): the
+  //! rear-axle target and the dynamics preview ask the lead wheel for more curvature than the
+  //! path's own peak (docs/vehicle_dynamics.md). 1 = exactly the path's peak.
+  double feedforward_headroom = 1.0;
   double feedforward_rate_margin = 1.25;  //!< L_ff = margin * path curvature rate ...
   double feedforward_rate_share = 0.8;    //!< ... but at most this share of the rate budget
   //! ... and at least kbar_path / this [m]: the feedforward can build up the path's curvature

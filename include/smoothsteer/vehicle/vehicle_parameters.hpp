@@ -57,6 +57,14 @@ struct VehicleParameters {
   //! Understeer gradient of the linearized model, K = m/L (lr/Cf - lf/Cr) [rad s^2/m], with the
   //! axle cornering stiffnesses Cf, Cr = B C D (Rajamani eq. 3.23 written per axle).
   double understeer_gradient() const noexcept;
+  //! Axle cornering stiffnesses Cf, Cr = B C D at the static loads [N/rad].
+  double front_cornering_stiffness_npr() const noexcept;
+  double rear_cornering_stiffness_npr() const noexcept;
+  //! K_r = m lf / (L Cr) [rad / (m/s^2)]: stationary rear-axle side slip per lateral
+  //! acceleration of the linear model, beta_r = -K_r a_y (the rear tire carries m a_y lf / L).
+  double rear_slip_gradient() const noexcept;
+  //! Friction limit of the lateral acceleration, min(mu_f, mu_r) g [m/s^2].
+  double friction_limit_mps2() const noexcept;
 
   //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
   std::optional<Violation> first_violation() const noexcept;

@@ -1,0 +1,96 @@
+#pragma once
+//! \file side_slip_observer.hpp
+//! Side-slip estimation for cars without a slip sensor (paper Outlook: "side slip can be
+//! estimated and thus compensated"). A Kalman filter on the linear single-track model
+//! (Rajamani, Vehicle Dynamics and Control, eqs. 2.31 and 2.45, written per axle) with the state
+//! x = (vy, r) and what a production car measures: yaw rate r (gyro), lateral acceleration a_y
+//! (accelerometer at the CG), speed vx and the road-wheel steering angle delta:
+//!   d vy / dt = -(Cf + Cr) / (m vx) vy - (vx + (Cf lf - Cr lr) / (m vx)) r + Cf / m delta
+//!   d r / dt  = -(Cf lf - Cr lr) / (Iz vx) vy - (Cf lf^2 + Cr lr^2) / (Iz vx) r + Cf lf / Iz delta
+//!   a_y = d vy / dt + vx r.
+//! The transition is the exact matrix exponential of the 2 x 2 system over the period. What the
+//! kinematic law needs is the rear axle's side slip beta_r = atan((vy - lr r) / vx): the angle
+//! from the heading to the rear axle's course (docs/vehicle_dynamics.md).
+//! Assumptions: linear tires (small slip angles, far from the friction limit), constant vx over
+//! a period, a flat road, the accelerometer at the CG and free of roll. update() is noexcept,
+//! allocation free and deterministic.
+
+#include <optional>
+#include <string>
+
+#include "smoothsteer/status.hpp"
+#include "smoothsteer/validation.hpp"
+#include "smoothsteer/vehicle/vehicle_parameters.hpp"
+
+namespace smoothsteer {
+
+struct SideSlipObserverParameters {
+  double mass_kg = 1093.3;                            //!< m [kg]
+  double yaw_inertia_kgm2 = 1791.6;                   //!< Iz [kg m^2]
+  double cg_to_front_axle_m = 1.156;                  //!< lf [m]
+  double cg_to_rear_axle_m = 1.422;                   //!< lr [m]
+  double front_cornering_stiffness_npr = 1.3e5;       //!< Cf of the front axle [N/rad]
+  double rear_cornering_stiffness_npr = 1.05e5;       //!< Cr of the rear axle [N/rad]
+  double yaw_rate_noise_std_radps = 0.002;            //!< std of the gyro's noise [rad/s]
+  double lateral_acceleration_noise_std_mps2 = 0.05;  //!< std of the accelerometer's [m/s^2]
+  //! Process noise: std of the unmodelled lateral force per unit mass [m/s^2] and of the
+  //! unmodelled yaw acceleration [rad/s^2] (tire nonlinearity, parameter error).
+  double lateral_process_std_mps2 = 0.5;
+  double yaw_process_std_radps2 = 0.5;
+  //! Below this speed the model is singular (1/vx); the estimate is kinematic: beta_r = 0 [m/s].
+  double min_speed_mps = 2.0;
+
+  //! The vehicle file's parameters: Cf, Cr = B C D at the static axle loads. The scales model
+  //! a wrong belief (robustness study): both stiffnesses times `cornering_stiffness_scale`,
+  //! mass and yaw inertia times `mass_scale`.
+  static SideSlipObserverParameters from_vehicle(const VehicleParameters& vehicle,
+                                                 double cornering_stiffness_scale = 1.0,
+                                                 double mass_scale = 1.0);
+
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  std::string validation_error() const;
+  void validate() const;  //!< throws std::invalid_argument
+};
+
+//! One period's measurements.
+struct SideSlipMeasurement {
+  double speed_mps = 0.0;                  //!< vx [m/s]; |vx| < min_speed_mps: kinematic
+  double yaw_rate_radps = 0.0;             //!< r [rad/s]
+  double lateral_acceleration_mps2 = 0.0;  //!< a_y at the CG [m/s^2]
+  double steering_angle_rad = 0.0;         //!< road-wheel angle delta (measured, not commanded)
+};
+
+class SideSlipObserver {
+ public:
+  //! Validates the parameters (throws std::invalid_argument naming the field).
+  explicit SideSlipObserver(const SideSlipObserverParameters& parameters);
+
+  //! Back to straight driving without slip and the initial uncertainty.
+  void reset() noexcept;
+  //! One prediction over `period_s` (with the held steering angle of the measurement) and the
+  //! correction with r and a_y. invalid_input for non-finite values or period_s <= 0; the
+  //! estimate is then unchanged.
+  Status update(const SideSlipMeasurement& measurement, double period_s) noexcept;
+
+  double lateral_velocity_mps() const noexcept { return lateral_velocity_; }  //!< vy [m/s]
+  double yaw_rate_radps() const noexcept { return yaw_rate_; }                //!< r [rad/s]
+  //! beta = atan(vy / vx) at the CG [rad].
+  double side_slip_rad() const noexcept { return side_slip_; }
+  //! beta_r = atan((vy - lr r) / vx): the rear axle's course minus the heading [rad], the input
+  //! ControllerInput::rear_axle_side_slip_rad.
+  double rear_axle_side_slip_rad() const noexcept { return rear_side_slip_; }
+  const SideSlipObserverParameters& parameters() const noexcept { return parameters_; }
+
+ private:
+  SideSlipObserverParameters parameters_;
+  double lateral_velocity_ = 0.0, yaw_rate_ = 0.0;
+  double covariance_[2][2]{};
+  double side_slip_ = 0.0, rear_side_slip_ = 0.0;
+  double speed_ = 0.0;
+  double previous_steering_ = 0.0;  //!< delta of the last measurement, held over the period
+  bool has_previous_ = false;
+};
+
+}  // namespace smoothsteer
