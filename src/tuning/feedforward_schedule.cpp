@@ -83,9 +83,8 @@ double largest(double high, Ok&& ok) {
 ScheduleEntry solve_node(const SpeedProblem& problem) {
   const TuningOptions& o = problem.options;
   const double total = largest_lead_curvature(problem.vehicle, problem.speed);
-  const double feedforward_bound =
-      std::min(o.feedforward_headroom * o.path_curvature_bound,
-               total * (1.0 - o.switching_floor_share));
+  const double feedforward_bound = std::min(o.feedforward_headroom * o.path_curvature_bound,
+                                            total * (1.0 - o.switching_floor_share));
   const double tiny = total * 1e-6;
   // The rate budget of the feedforward alone (kbar_sw -> 0), then its share of it.
   double feedforward_rate = 0.0;
