@@ -181,9 +181,8 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   // With a plant disturbance kappa_d the chain is stationary on kappa - kappa_d while the rear
   // axle follows kappa: the lead wheel's offset is that of the chain's stationary shape,
   // e0(kappa - kappa_d), minus the path's extra bend over the chain's reach l = sum lambda_i,
-  // kappa_d l^2 / 2
-  // (docs/feedforward.md, "disturbances on the vehicle"); the curve itself keeps the path's
-  // curvature.
+  // kappa_d l^2 / 2 (docs/feedforward.md, "disturbances on the vehicle"); the curve itself keeps
+  // the path's curvature.
   const double d = disturbance_estimate_;
   TargetCurve target =
       rear_axle_target_curve(curvature.before - d, curvature.at - d, curvature.after - d,
@@ -230,11 +229,8 @@ void LeadWheelController::update_disturbance_estimate(const ControllerInput& inp
       const auto age = std::min<std::size_t>(
           command_history_count_ - 1,
           static_cast<std::size_t>(std::lround(parameters_.actuator_delay_s / input.period_s)));
-      const double commanded_steering =
-          command_history_[(command_history_next_ + command_history_size - 1 - age) %
-                           command_history_size]
-              .steering_rad;
-      const double commanded = std::tan(commanded_steering) / parameters_.vehicle_wheelbase_m;
+      const double commanded =
+          std::tan(issued_command(age).steering_rad) / parameters_.vehicle_wheelbase_m;
       const double measured = wrap_angle(course - previous_course_) / distance;
       const double gain = std::min(1.0, distance / length);
       const double bound = parameters_.feedforward_curvature_bound();
@@ -257,16 +253,13 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
   // `delay` seconds. Find the oldest such command, then roll the kinematic model forward through
   // them, oldest first, at the current speed.
   const KinematicSingleTrack model{parameters_.vehicle_wheelbase_m};
-  auto issued = [this](std::size_t age) -> const IssuedCommand& {  // age 0 = newest
-    return command_history_[(command_history_next_ + command_history_size - 1 - age) %
-                            command_history_size];
-  };
   std::size_t count = 0;
   double covered = 0.0;
-  while (count < command_history_count_ && covered < delay) covered += issued(count++).period_s;
+  while (count < command_history_count_ && covered < delay)
+    covered += issued_command(count++).period_s;
   double overshoot = covered > delay ? covered - delay : 0.0;  // part of the oldest one
   for (std::size_t k = count; k-- > 0;) {
-    const IssuedCommand& command = issued(k);
+    const IssuedCommand& command = issued_command(k);
     const double duration = command.period_s - overshoot;
     overshoot = 0.0;
     pose = model.step(pose, command.steering_rad, input.speed_mps, duration);
@@ -300,7 +293,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   // the rear-axle pose predicted by the chain's own kinematics (rear curvature
   // tan(delta_1) / lambda_1). This keeps the discrete sliding band of the lead wheel at
   // O(kbar h^2) for the sub-step h instead of O(kbar (v dt)^2).
-  const double distance = std::abs(input.speed_mps) * input.period_s;
+  const double distance = speed_magnitude * input.period_s;
   int steps = 1;
   if (n > 0 && distance > 0.0) {
     steps = std::clamp(static_cast<int>(std::ceil(distance / largest_substep_m_)), 1,
@@ -312,7 +305,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   LeadWheelState first{};
   double applied_curvature = 0.0;
   // Friction guard: the lead curvature whose stationary rear-axle curvature is a_max / v^2.
-  const double guard = friction_guard_curvature(std::abs(input.speed_mps));
+  const double guard = friction_guard_curvature(speed_magnitude);
   const double feedforward_bound = std::min(parameters_.feedforward_curvature_bound(), guard);
   const double switching_bound = parameters_.switching_curvature_bound();
   const double feedforward_step =
@@ -361,10 +354,9 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     const double curvature_of_gain = vehicle_angle_gain_slope(front, ratio);
     const FrontAngleDerivatives d =
         front_angle_derivatives(angles_, wheelbases, n, applied_curvature);
-    const double speed = std::abs(input.speed_mps);
-    const double front_rate = speed * d.first;
-    const double front_acceleration =
-        speed * speed * d.second + direction_ * input.acceleration_mps2 * d.first;
+    const double front_rate = speed_magnitude * d.first;
+    const double front_acceleration = speed_magnitude * speed_magnitude * d.second +
+                                      direction_ * input.acceleration_mps2 * d.first;
     steering = vehicle_steering_angle(front);
     rate = direction_ * gain * front_rate;
     derivatives = n >= 2 ? 2 : 1;

@@ -28,12 +28,6 @@ bool all_finite(const TraceSample& sample) {
   return true;
 }
 
-//! The rear axle's true side slip beta_r = atan((vy - lr r) / vx) (0 at standstill).
-double rear_axle_side_slip(const VehicleState& state, const VehicleParameters& car) {
-  if (std::abs(state.vx_mps) < 1e-6) return 0.0;
-  return std::atan((state.vy_mps - car.cg_to_rear_axle_m * state.yaw_rate_radps) / state.vx_mps);
-}
-
 //! One observer step on what a car's sensors would report now (with the configured noise);
 //! returns its beta_r estimate, clamped to what the controller accepts.
 template <typename Noise>
@@ -226,7 +220,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
       input.rear_axle_position.y += parameters.position_noise_std_m * unit_normal(engine);
       input.heading_rad += parameters.heading_noise_std_rad * unit_normal(engine);
     }
-    const double true_rear_slip = rear_axle_side_slip(state, car);
+    const double true_rear_slip = rear_axle_side_slip_angle(state, car);
     if (slip.source == SideSlipSource::truth) {
       input.rear_axle_side_slip_rad = true_rear_slip;
     } else if (slip.source == SideSlipSource::observer) {

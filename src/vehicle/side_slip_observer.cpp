@@ -10,10 +10,6 @@ constexpr const char* owner = "SideSlipObserverParameters";
 constexpr double kInitialLateralVelocityStd = 0.5;
 constexpr double kInitialYawRateStd = 0.1;
 
-bool positive(double value) noexcept {
-  return std::isfinite(value) && value > 0.0;
-}
-
 using Matrix2 = double[2][2];
 
 //! e^{A t} of a 2 x 2 matrix (Cayley-Hamilton: e^{At} = e^{mu t} (c I + s (A - mu I)) with mu the
@@ -71,9 +67,7 @@ SideSlipObserverParameters SideSlipObserverParameters::from_vehicle(
 }
 
 std::optional<Violation> SideSlipObserverParameters::first_violation() const noexcept {
-  auto bad = [](const char* field, double value, const char* rule) {
-    return Violation{owner, "", field, value, rule};
-  };
+  RuleChecker check(owner);
   const struct {
     const char* field;
     double value;
@@ -90,14 +84,12 @@ std::optional<Violation> SideSlipObserverParameters::first_violation() const noe
       {"yaw_process_std_radps2", yaw_process_std_radps2},
   };
   for (const auto& entry : strictly_positive) {
-    if (!positive(entry.value) || entry.value > 1e12) {
-      return bad(entry.field, entry.value, "must be finite, > 0 and <= 1e12");
-    }
+    check.require(positive_finite(entry.value) && entry.value <= 1e12, entry.field, entry.value,
+                  "must be finite, > 0 and <= 1e12");
   }
-  if (!std::isfinite(min_speed_mps) || min_speed_mps < 0.5 || min_speed_mps > 50.0) {
-    return bad("min_speed_mps", min_speed_mps, "must be in [0.5, 50] m/s");
-  }
-  return std::nullopt;
+  check.require(std::isfinite(min_speed_mps) && min_speed_mps >= 0.5 && min_speed_mps <= 50.0,
+                "min_speed_mps", min_speed_mps, "must be in [0.5, 50] m/s");
+  return check.first();
 }
 
 std::string SideSlipObserverParameters::validation_error() const {
@@ -126,7 +118,7 @@ void SideSlipObserver::reset() noexcept {
 Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) noexcept {
   if (!std::isfinite(m.speed_mps) || !std::isfinite(m.yaw_rate_radps) ||
       !std::isfinite(m.lateral_acceleration_mps2) || !std::isfinite(m.steering_angle_rad) ||
-      !positive(period_s) || period_s > 1.0) {
+      !positive_finite(period_s) || period_s > 1.0) {
     return Status::invalid_input;
   }
   const SideSlipObserverParameters& p = parameters_;

@@ -11,6 +11,13 @@ double side_slip_angle(const VehicleState& state) noexcept {
   return std::atan2(state.vy_mps, std::abs(state.vx_mps));
 }
 
+double rear_axle_side_slip_angle(const VehicleState& state,
+                                 const VehicleParameters& vehicle) noexcept {
+  if (std::abs(state.vx_mps) < 1e-6) return 0.0;
+  return std::atan((state.vy_mps - vehicle.cg_to_rear_axle_m * state.yaw_rate_radps) /
+                   state.vx_mps);
+}
+
 Pose2 rear_axle_pose(const VehicleState& state, const VehicleParameters& vehicle) noexcept {
   const Vec2 cg{state.x_m, state.y_m};
   return {cg - vehicle.cg_to_rear_axle_m * unit_from_heading(state.heading_rad), state.heading_rad};

@@ -88,8 +88,7 @@ TEST(SideSlipObserver, ConvergesOnRandomManoeuvresOfTheKineticModel) {
           rates.vy_mps + x.vx_mps * x.yaw_rate_radps + 0.05 * normal(random.engine());
       m.steering_angle_rad = delta;
       ASSERT_EQ(observer.update(m, period), Status::ok) << seed_message(seed);
-      const double truth =
-          std::atan((x.vy_mps - car.cg_to_rear_axle_m * x.yaw_rate_radps) / x.vx_mps);
+      const double truth = rear_axle_side_slip_angle(x, car);
       largest = std::max(largest, std::abs(truth));
       if (t >= 1.5) {
         const double error = std::abs(observer.rear_axle_side_slip_rad() - truth);

@@ -131,6 +131,11 @@ class LeadWheelController final : public SteeringController {
   std::array<IssuedCommand, command_history_size> command_history_{};
   std::size_t command_history_count_ = 0;  //!< valid entries
   std::size_t command_history_next_ = 0;   //!< slot of the next command
+  //! The command issued `age` periods ago (0 = the newest); age < command_history_count_.
+  const IssuedCommand& issued_command(std::size_t age) const noexcept {
+    return command_history_[(command_history_next_ + command_history_size - 1 - age) %
+                            command_history_size];
+  }
   Pose2 predicted_pose(const ControllerInput& input) const noexcept;
   double direction_ = 1.0;
   double matched_disturbance_ = 0.0;

@@ -34,6 +34,10 @@ struct VehicleState {
 
 //! Side-slip angle of the CG, beta = atan(vy / vx) (0 at standstill) [rad].
 double side_slip_angle(const VehicleState& state) noexcept;
+//! Side slip of the rear axle, beta_r = atan((vy - lr r) / vx): the angle from the heading to the
+//! rear axle's velocity (0 below 1e-6 m/s). What ControllerInput::rear_axle_side_slip_rad means.
+double rear_axle_side_slip_angle(const VehicleState& state,
+                                 const VehicleParameters& vehicle) noexcept;
 //! Rear-axle pose, the controller's reference point: rear = CG - lr (cos psi, sin psi).
 Pose2 rear_axle_pose(const VehicleState& state, const VehicleParameters& vehicle) noexcept;
 //! Front-axle position: CG + lf (cos psi, sin psi).
