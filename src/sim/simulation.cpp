@@ -188,6 +188,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                                    parameters.integrator,
                                    parameters.integrator_tolerance,
                                    &result.model_evaluations,
+                                   &result.plant_fallback_periods,
                                    input_buffer.data()};
 
   std::mt19937_64 engine(parameters.noise_seed);

@@ -26,8 +26,8 @@ namespace smoothsteer {
 enum class PlantIntegrator {
   //! RK4 of vehicle and actuator at the fixed sub-step (the reference method).
   fixed_rk4,
-  //! Exact actuator lags + Runge-Kutta-Fehlberg 7(8) with error control, restarted at every
-  //! control instant; fixed_rk4 for a period in which the actuator saturates.
+  //! The actuator solved exactly (its rate and angle saturation included) + Runge-Kutta-
+  //! Fehlberg 7(8) with error control, restarted at every control instant.
   rkf78,
   //! The same with Dormand-Prince 5(4) (more model evaluations at equal accuracy here).
   dopri5,
@@ -138,6 +138,9 @@ struct SimulationResult {
   bool non_finite = false;
   std::string stop_reason;  //!< "duration", "path_end", "controller_error" or "non_finite"
   std::uint64_t model_evaluations = 0;  //!< calls of VehicleModel::derivative (cost measure)
+  //! Control periods that rkf78 / dopri5 left to fixed_rk4 because the exact actuator solution
+  //! needed more segments than fit (src/sim/exact_actuator.hpp); expected 0.
+  std::uint64_t plant_fallback_periods = 0;
 };
 
 //! Receives every trace sample as it is produced (e.g. a CSV writer and a metrics accumulator).
