@@ -9,7 +9,8 @@ Usage (repository root, after a build):
       [--candidate rkf78:1e-8 --candidate dopri5:1e-7 ...] [SCENARIO.yaml ...]
 Prints, per scenario: model evaluations per control step, and for each candidate the largest
 difference of a length metric [m], of an angle metric [rad], of a rate or acceleration metric
-[rad/s, rad/s^2], of a time metric [s], and the counts that differ. Only the standard library.
+[rad/s, rad/s^2], of a time metric [s], and the counts that differ; then one markdown table.
+Only the standard library.
 """
 import argparse
 import glob
@@ -80,6 +81,7 @@ def main():
     candidates = [(c, ["simulation.integrator=" + c.split(":")[0],
                        "simulation.integrator_tolerance=" + c.split(":")[1]])
                   for c in (args.candidate or [])] or [("default", [])]
+    table = []
     with tempfile.TemporaryDirectory() as scratch:
         for scenario in scenarios:
             name = os.path.splitext(os.path.basename(scenario))[0]
@@ -89,14 +91,23 @@ def main():
             print(f"## {name} ({references['rkf78 1e-10']['metrics']['steps']} steps)")
             for label, summary in runs:
                 print(f"  {label}: {evaluations_per_step(summary):.2f} evaluations/step")
+                cells = [name, label, f"{evaluations_per_step(summary):.2f}"]
                 for reference, reference_summary in references.items():
                     worst, counts = differences(summary, reference_summary)
                     text = ", ".join(f"{k} {gap:.2g} ({key})" for k, (gap, key) in sorted(worst.items()))
                     print(f"    vs {reference}: {text}; counts: {'; '.join(counts) or 'equal'}")
+                    cells += [f"{worst['length'][0]:.1e} m", f"{worst['angle'][0]:.1e} rad",
+                              f"{worst['rate'][0]:.1e}", "; ".join(counts) or "-"]
+                table.append(cells)
             worst, counts = differences(references["fixed_rk4 0.1 ms"], references["rkf78 1e-10"])
             text = ", ".join(f"{k} {gap:.2g} ({key})" for k, (gap, key) in sorted(worst.items()))
             print(f"  references apart: {text}; counts: {'; '.join(counts) or 'equal'}")
             sys.stdout.flush()
+    print("\n| scenario | integrator | evals/step | vs fixed_rk4 0.1 ms: length | angle | rate | counts "
+          "| vs rkf78 1e-10: length | angle | rate | counts |")
+    print("|" + "---|" * 11)
+    for cells in table:
+        print("| " + " | ".join(cells) + " |")
 
 
 if __name__ == "__main__":

@@ -151,7 +151,8 @@ struct SaturatingCase {
     text = out.str();
   }
 
-  SimulationResult run(PlantIntegrator integrator, double substep_s) const {
+  SimulationResult run(PlantIntegrator integrator, double substep_s,
+                       double tolerance = SimulationParameters{}.integrator_tolerance) const {
     static const VehicleParameters car;
     static const DynamicSingleTrack model(car);
     static const Path path = Path::straight_line({0, 0}, 0.0, 500.0);
@@ -159,6 +160,7 @@ struct SaturatingCase {
     sim.duration_s = 4.0;
     sim.substep_s = substep_s;
     sim.integrator = integrator;
+    sim.integrator_tolerance = tolerance;
     SaturatingSteering controller(amplitude, frequency, step);
     return simulate(path, model, actuator, speed, sim, {{0.0, 0.0}, 0.0}, controller);
   }
@@ -201,7 +203,9 @@ TEST(ExactActuator, AdaptivePlantMatchesFineRk4UnderSaturation) {
     }
     EXPECT_TRUE(saturated) << c.text;
     for (PlantIntegrator integrator : {PlantIntegrator::rkf78, PlantIntegrator::dopri5}) {
-      const SimulationResult result = c.run(integrator, 0.001);
+      // At 1e-8 the vehicle's integration error stays far below the reference's; the default
+      // tolerance is checked against RK4 at 10 us below.
+      const SimulationResult result = c.run(integrator, 0.001, 1e-8);
       const std::string context =
           c.text + "; integrator " + std::to_string(static_cast<int>(integrator));
       ASSERT_EQ(result.trace.size(), fine.trace.size()) << context;
@@ -224,16 +228,27 @@ TEST(ExactActuator, AdaptivePlantMatchesFineRk4UnderSaturation) {
 
 TEST(ExactActuator, AdaptivePlantMatchesConvergedRk4) {
   if (!adaptive_available()) GTEST_SKIP() << "built without Boost.Odeint";
-  for (int k = 0; k < 3; ++k) {  // dead times 0, 10 and 30 ms; RK4 at 10 us is converged here
-    const SaturatingCase c(case_seed(k), k);
-    const SimulationResult converged = c.run(PlantIntegrator::fixed_rk4, 0.00001);
-    for (PlantIntegrator integrator : {PlantIntegrator::rkf78, PlantIntegrator::dopri5}) {
-      const Deviation d = deviation(c.run(integrator, 0.001), converged);
-      const std::string context =
-          c.text + "; integrator " + std::to_string(static_cast<int>(integrator));
-      EXPECT_LT(d.position_m, 1e-5) << context;
-      EXPECT_LT(d.heading_rad, 1e-6) << context;
-      EXPECT_LT(d.steering_rad, 1e-8) << context;
+  // At a tolerance of 1e-8 the adaptive runs converge on RK4 at 10 us; at the default (1e-6)
+  // they stay within 1e-4 m, far below the 1 mm the shipped scenarios' metrics are held to.
+  // The steering angle does not depend on the tolerance (the actuator is solved exactly).
+  struct Setting {
+    double tolerance, position_m, heading_rad;
+  };
+  const double default_tolerance = SimulationParameters{}.integrator_tolerance;
+  for (const Setting setting :
+       {Setting{1e-8, 1e-5, 1e-6}, Setting{default_tolerance, 1e-4, 1e-5}}) {
+    for (int k = 0; k < 3; ++k) {  // dead times 0, 10 and 30 ms
+      const SaturatingCase c(case_seed(k), k);
+      const SimulationResult converged = c.run(PlantIntegrator::fixed_rk4, 0.00001);
+      for (PlantIntegrator integrator : {PlantIntegrator::rkf78, PlantIntegrator::dopri5}) {
+        const Deviation d = deviation(c.run(integrator, 0.001, setting.tolerance), converged);
+        const std::string context = c.text + "; integrator " +
+                                    std::to_string(static_cast<int>(integrator)) + ", tolerance " +
+                                    std::to_string(setting.tolerance);
+        EXPECT_LT(d.position_m, setting.position_m) << context;
+        EXPECT_LT(d.heading_rad, setting.heading_rad) << context;
+        EXPECT_LT(d.steering_rad, 1e-8) << context;
+      }
     }
   }
 }
