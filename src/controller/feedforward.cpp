@@ -4,12 +4,13 @@
 #include <cmath>
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
 
-TargetCurve rear_axle_target_curve(double curvature_before, double curvature,
-                                   double curvature_after, double step_m,
-                                   double chain_length_squared) noexcept {
+TargetCurve stationary_rear_axle_target_curve(double curvature_before, double curvature,
+                                              double curvature_after, double step_m,
+                                              double chain_length_squared) noexcept {
   const double before = rear_axle_cornering_offset(curvature_before, chain_length_squared);
   const double at = rear_axle_cornering_offset(curvature, chain_length_squared);
   const double after = rear_axle_cornering_offset(curvature_after, chain_length_squared);
@@ -20,6 +21,72 @@ TargetCurve rear_axle_target_curve(double curvature_before, double curvature,
   target.offset = at;
   target.heading = std::atan(slope / scale);
   target.curvature = curvature / scale + bend;
+  return target;
+}
+
+CurvatureJet curvature_jet(double before, double at, double after) noexcept {
+  constexpr double h = curvature_jet_step_m;
+  return {at, (after - before) / (2.0 * h), (after - 2.0 * at + before) / (h * h)};
+}
+
+ChainInverse invert_chain(const CurvatureJet& rear, const double* wheelbases, int order) noexcept {
+  // Stage i + 1 takes kappa_i as a jet in the rear's arc length s (value, d/ds, d2/ds2) and the
+  // stretch g = ds_i / ds with its slope. sigma = kappa c with c = (1 + lambda^2 kappa^2)^(-1/2),
+  // so sigma' = kappa' c^3 and sigma'' = kappa'' c^3 - 3 lambda^2 kappa kappa'^2 c^5; then
+  // kappa_{i+1} = sigma + lambda sigma' / g (the stage's lag inverted, d/ds_i = (1/g) d/ds).
+  ChainInverse inverse;
+  double value = rear.value, slope = rear.slope, bend = rear.bend;
+  double stretch = 1.0, stretch_slope = 0.0;
+  for (int i = 0; i < order; ++i) {
+    const double lambda = wheelbases[i];
+    const double c = 1.0 / std::sqrt(1.0 + lambda * lambda * value * value);
+    const double c3 = c * c * c;
+    const double sigma = value * c;
+    const double sigma_slope = slope * c3;
+    const double sigma_bend =
+        bend * c3 - 3.0 * lambda * lambda * value * slope * slope * c3 * c * c;
+    inverse.angles[static_cast<std::size_t>(i)] = std::atan(lambda * value);
+    const double next_value = sigma + lambda * sigma_slope / stretch;
+    const double next_slope =
+        sigma_slope +
+        lambda * (sigma_bend * stretch - sigma_slope * stretch_slope) / (stretch * stretch);
+    // ds_{i+1} / ds = g sec(delta_{i+1}) = g / c.
+    stretch_slope = stretch_slope / c + stretch * lambda * lambda * value * slope * c;
+    stretch /= c;
+    value = next_value, slope = next_slope, bend = 0.0;  // the jet has no third derivative
+  }
+  inverse.lead_curvature = value;
+  return inverse;
+}
+
+double chain_reach(const double* wheelbases, int order) noexcept {
+  double reach = 0.0;
+  for (int i = 0; i < order; ++i) reach += wheelbases[i];
+  return reach;
+}
+
+TargetCurve rear_axle_target_curve(const Path& path, double lead_arc_length_m,
+                                   const CurvatureJet& rear, const double* wheelbases,
+                                   int order) noexcept {
+  const ChainInverse chain = invert_chain(rear, wheelbases, order);
+  const PathPoint rear_point = path.evaluate(lead_arc_length_m - chain_reach(wheelbases, order));
+  ChainGeometry geometry;
+  chain_geometry(rear_point.position, rear_point.heading_rad, chain.angles, wheelbases, order,
+                 geometry);
+  const auto lead = static_cast<std::size_t>(order);
+  // Closest point of the lead wheel's target position: one Newton step from the lead wheel's own.
+  PathPoint closest = path.evaluate(lead_arc_length_m);
+  const Vec2 gap = geometry.position[lead] - closest.position;
+  const Vec2 tangent = unit_from_heading(closest.heading_rad);
+  const double across = cross(tangent, gap);
+  const double along = dot(tangent, gap) / std::max(0.5, 1.0 - closest.curvature * across);
+  closest = path.evaluate(lead_arc_length_m + along);
+  TargetCurve target;
+  target.heading = wrap_angle(geometry.heading[lead] - closest.heading_rad);
+  target.offset =
+      cross(unit_from_heading(closest.heading_rad), geometry.position[lead] - closest.position) -
+      along * std::tan(target.heading);
+  target.curvature = chain.lead_curvature;
   return target;
 }
 
