@@ -51,7 +51,13 @@ double lead_curvature_rate_demand(const Path& path, const double* wheelbases, in
   if (order <= 0) return 0.0;
   constexpr double h = curvature_jet_step_m;
   const auto samples = static_cast<long>(std::ceil(path.length() / h));
-  auto curvature = [&](long k) { return path.evaluate(static_cast<double>(k) * h).curvature; };
+  // Samples inside [0, L] only: the straight end extensions would add a jump that no vehicle
+  // starting on the path meets.
+  auto curvature = [&](long k) {
+    return path
+        .evaluate(std::min(path.length(), static_cast<double>(std::clamp(k, 0L, samples)) * h))
+        .curvature;
+  };
   double before = curvature(-1), at = curvature(0), after = curvature(1);
   double previous =
       invert_chain(curvature_jet(before, at, after), wheelbases, order).lead_curvature;
