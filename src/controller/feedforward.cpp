@@ -65,27 +65,28 @@ double chain_reach(const double* wheelbases, int order) noexcept {
   return reach;
 }
 
-TargetCurve rear_axle_target_curve(const Path& path, double lead_arc_length_m,
+TargetCurve rear_axle_target_curve(const Path& path, const PathProjection& lead,
                                    const CurvatureJet& rear, const double* wheelbases,
                                    int order) noexcept {
   const ChainInverse chain = invert_chain(rear, wheelbases, order);
-  const PathPoint rear_point = path.evaluate(lead_arc_length_m - chain_reach(wheelbases, order));
+  const PathPoint rear_point = path.evaluate(lead.arc_length_m - chain_reach(wheelbases, order));
   ChainGeometry geometry;
   chain_geometry(rear_point.position, rear_point.heading_rad, chain.angles, wheelbases, order,
                  geometry);
-  const auto lead = static_cast<std::size_t>(order);
-  // Closest point of the lead wheel's target position: one Newton step from the lead wheel's own.
-  PathPoint closest = path.evaluate(lead_arc_length_m);
-  const Vec2 gap = geometry.position[lead] - closest.position;
-  const Vec2 tangent = unit_from_heading(closest.heading_rad);
-  const double across = cross(tangent, gap);
-  const double along = dot(tangent, gap) / std::max(0.5, 1.0 - closest.curvature * across);
-  closest = path.evaluate(lead_arc_length_m + along);
+  const auto n = static_cast<std::size_t>(order);
+  // The target point in the path's frame at `lead` (a along the tangent, b to the left), projected
+  // onto the path's osculating circle there (curvature k; the forms below have no cancellation
+  // for small k): offset (2 b - k (a^2 + b^2)) / (1 + hypot(k a, k b - 1)), the path's heading
+  // turns by atan2(k a, 1 - k b) up to the foot, which lies that angle / |k| along the path.
+  const Vec2 gap = geometry.position[n] - lead.closest_point;
+  const Vec2 tangent = unit_from_heading(lead.heading_rad);
+  const double a = dot(tangent, gap), b = cross(tangent, gap), k = lead.curvature;
+  const double offset = (2.0 * b - k * (a * a + b * b)) / (1.0 + std::hypot(k * a, k * b - 1.0));
+  const double turn = std::atan2(k * a, 1.0 - k * b);
+  const double foot = std::abs(k * a) < 1e-9 ? a : turn / k;
   TargetCurve target;
-  target.heading = wrap_angle(geometry.heading[lead] - closest.heading_rad);
-  target.offset =
-      cross(unit_from_heading(closest.heading_rad), geometry.position[lead] - closest.position) -
-      along * std::tan(target.heading);
+  target.heading = wrap_angle(geometry.heading[n] - lead.heading_rad - turn);
+  target.offset = offset - foot * std::tan(target.heading);
   target.curvature = chain.lead_curvature;
   return target;
 }

@@ -197,7 +197,7 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
     // The chain's angles come from kappa - kappa_d, the lead wheel's position from the path's
     // own geometry, so its curve bends by kappa_d more than the chain's input.
     jet.value -= d;
-    target = rear_axle_target_curve(*path_, lead.arc_length_m, jet, parameters_.wheelbases_m.data(),
+    target = rear_axle_target_curve(*path_, lead, jet, parameters_.wheelbases_m.data(),
                                     parameters_.order);
   } else {
     // The chain's stationary shape on kappa - kappa_d, minus the path's extra bend over the

@@ -110,8 +110,9 @@ TEST(ChainInverse, StationaryCorneringGivesTheConcentricCircles) {
     const auto circle =
         Path::circle({0.0, 0.0}, std::abs(1.0 / curvature) + 5.0, curvature > 0.0, 0.0);
     const double on_circle = circle.max_abs_curvature() * (curvature > 0.0 ? 1.0 : -1.0);
+    const PathProjection at = circle.project(circle.evaluate(20.0).position);
     const TargetCurve target =
-        rear_axle_target_curve(circle, 20.0, {on_circle, 0.0, 0.0}, lambda, order);
+        rear_axle_target_curve(circle, at, {on_circle, 0.0, 0.0}, lambda, order);
     EXPECT_NEAR(target.offset, rear_axle_cornering_offset(on_circle, squared), 1e-6);
     EXPECT_NEAR(target.heading, 0.0, 1e-5);
   }

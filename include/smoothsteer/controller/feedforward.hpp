@@ -51,12 +51,13 @@ struct ChainInverse {
 ChainInverse invert_chain(const CurvatureJet& rear, const double* wheelbases, int order) noexcept;
 
 //! The exact rear-axle target (CorneringTarget::rear_axle_exact): where the lead wheel runs when
-//! the rear axle is on the path. The rear axle sits a chain's reach behind the lead wheel's closest
-//! point `lead_arc_length_m`; the chain's pose there (invert_chain with the curvature jet `rear`,
-//! the path's position and heading at that point) puts the lead wheel at a point whose offset from
-//! the path, heading relative to it and curvature are the target's, the offset carried to the lead
-//! wheel's own closest point along the target's heading.
-TargetCurve rear_axle_target_curve(const Path& path, double lead_arc_length_m,
+//! the rear axle is on the path. The rear axle sits a chain's reach behind the lead wheel's
+//! closest point `lead`; the chain's pose there (invert_chain with the curvature jet `rear`, the
+//! path's position and heading at that point) puts the lead wheel at a point whose offset from the
+//! path, heading relative to it and curvature are the target's. That point lies centimetres from
+//! `lead`, so the path is taken as its osculating circle at `lead` there; the offset is carried to
+//! the lead wheel's own closest point along the target's heading. One Path::evaluate.
+TargetCurve rear_axle_target_curve(const Path& path, const PathProjection& lead,
                                    const CurvatureJet& rear, const double* wheelbases,
                                    int order) noexcept;
 
