@@ -38,6 +38,7 @@ std::shared_ptr<const Path> straight_path() {
 enum class Law {
   defaults,  //!< ControllerParameters{}: feedforward without rate limit, rear-axle target
   preview,   //!< rate-limited feedforward with preview, as the certified schedules use it
+  exact,     //!< the same with the exact rear-axle target and the single-track inversion
   paper,     //!< the paper's law: no feedforward, the lead wheel on the path
 };
 
@@ -45,7 +46,11 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
   ControllerParameters parameters;
   parameters.order = order;
   parameters.lead_curvature_bound = 0.1;
-  if (law == Law::preview) parameters.feedforward_curvature_rate = 0.005;
+  if (law == Law::preview || law == Law::exact) parameters.feedforward_curvature_rate = 0.005;
+  if (law == Law::exact) {
+    parameters.cornering_target = CorneringTarget::rear_axle_exact;
+    parameters.rear_slip_gradient_s2pm = parameters.front_slip_gradient_s2pm = 0.00465;
+  }
   if (law == Law::paper) {
     parameters.feedforward_share = 0.0;
     parameters.boundary_layer = 0.0;
@@ -79,6 +84,9 @@ void BM_UpdateCurvedPath10k(benchmark::State& state) {
 void BM_UpdateCurvedPath10kPreview(benchmark::State& state) {
   update_cost(state, curved_path(), Law::preview);
 }
+void BM_UpdateCurvedPath10kExactTarget(benchmark::State& state) {
+  update_cost(state, curved_path(), Law::exact);
+}
 void BM_UpdateCurvedPath10kPaperLaw(benchmark::State& state) {
   update_cost(state, curved_path(), Law::paper);
 }
@@ -111,6 +119,7 @@ BENCHMARK(BM_UpdateCurvedPath10k)
     ->Repetitions(5)
     ->ReportAggregatesOnly(true);
 BENCHMARK(BM_UpdateCurvedPath10kPreview)->Arg(1)->Arg(2);
+BENCHMARK(BM_UpdateCurvedPath10kExactTarget)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kPaperLaw)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateFarFromCurvedPath10k)->Arg(2)->Repetitions(3)->ReportAggregatesOnly(true);
 

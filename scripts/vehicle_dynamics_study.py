@@ -19,13 +19,13 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENARIOS = ["lane_change_10", "lane_change_15", "lane_change_19", "circle_sections"]
-OFF = ["controller.slip_preview=false", "controller.preview_time_s=0",
+OFF = ["controller.slip_preview=false", "controller.preview_time_s=0", "controller.cornering_target=rear_axle",
        "simulation.side_slip.source=none"]
 # The scenarios' actuator: 10 Hz third-order low-pass, T = 1 / pole = sqrt(2^(1/3) - 1) / (2 pi 10).
 ACTUATOR_T = math.sqrt(2 ** (1 / 3) - 1) / (2 * math.pi * 10.0)
 VARIANTS = [
     ("compensation off", OFF),
-    ("shipped: observer + slip preview + 0.1 s preview", []),
+    ("shipped: observer + single-track inversion (scenario preview_time_s)", []),
     ("true slip instead of the observer", ["simulation.side_slip.source=truth"]),
     ("observer stiffness x 0.8", ["simulation.side_slip.cornering_stiffness_scale=0.8"]),
     ("observer stiffness x 1.2", ["simulation.side_slip.cornering_stiffness_scale=1.2"]),

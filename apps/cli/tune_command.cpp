@@ -114,12 +114,7 @@ void run_tune(const TuneArguments& arguments) {
   options.certificate =
       arguments.certificate == "box" ? Certificate::box : Certificate::feedforward;
   if (!arguments.path_file.empty()) {
-    const PathDemand demand = path_demand(*load_path_file(arguments.path_file));
-    options.path_curvature_bound = std::max(options.path_curvature_bound, demand.max_curvature);
-    options.path_curvature_rate_bound =
-        std::isinf(options.path_curvature_rate_bound)
-            ? demand.max_curvature_rate
-            : std::max(options.path_curvature_rate_bound, demand.max_curvature_rate);
+    const PathDemand demand = apply_path_demand(options, load_path_file(arguments.path_file));
     std::cout << "path " << arguments.path_file << ": max |kappa| " << demand.max_curvature
               << " 1/m, max |d kappa/ds| " << demand.max_curvature_rate << " 1/m^2\n";
   }

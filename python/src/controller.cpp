@@ -57,6 +57,8 @@ void bind_controller(py::module_& m) {
       .value("paper", SlidingSurface::paper, "eq. (sigma) as printed");
   py::enum_<CorneringTarget>(m, "CorneringTarget")
       .value("rear_axle", CorneringTarget::rear_axle, "the rear axle on the path (default)")
+      .value("rear_axle_exact", CorneringTarget::rear_axle_exact,
+             "the rear axle on the path also while the curvature changes (the chain's inverse)")
       .value("lead_wheel", CorneringTarget::lead_wheel, "the lead wheel on the path (paper)");
 
   using P = ControllerParameters;

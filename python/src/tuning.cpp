@@ -52,13 +52,7 @@ py::dict schedule_arrays(const GainSchedule& schedule) {
 
 //! The path's curvature and curvature rate raise the options' bounds, as in `tune --path`.
 void add_path_demand(TuningOptions& options, const std::shared_ptr<Path>& path) {
-  if (!path) return;
-  const PathDemand demand = path_demand(*path);
-  options.path_curvature_bound = std::max(options.path_curvature_bound, demand.max_curvature);
-  options.path_curvature_rate_bound =
-      std::isinf(options.path_curvature_rate_bound)
-          ? demand.max_curvature_rate
-          : std::max(options.path_curvature_rate_bound, demand.max_curvature_rate);
+  apply_path_demand(options, path);
 }
 
 GainSchedule tune(const VehicleLimits& vehicle, const std::vector<double>& speeds,

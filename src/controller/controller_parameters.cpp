@@ -81,6 +81,11 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
     return fail(text("rear_slip_gradient_s2pm"), p.rear_slip_gradient_s2pm,
                 text("must be in [0, 0.1] s^2/m"));
   }
+  if (!std::isfinite(p.front_slip_gradient_s2pm) || p.front_slip_gradient_s2pm < 0.0 ||
+      p.front_slip_gradient_s2pm > ControllerParameters::max_rear_slip_gradient_s2pm) {
+    return fail(text("front_slip_gradient_s2pm"), p.front_slip_gradient_s2pm,
+                text("must be in [0, 0.1] s^2/m"));
+  }
   if (!std::isfinite(p.disturbance_estimation_length_m) ||
       (p.disturbance_estimation_length_m != 0.0 &&
        (p.disturbance_estimation_length_m < 1.0 || p.disturbance_estimation_length_m > 1000.0))) {

@@ -4,12 +4,13 @@
 #include <cmath>
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
 
-TargetCurve rear_axle_target_curve(double curvature_before, double curvature,
-                                   double curvature_after, double step_m,
-                                   double chain_length_squared) noexcept {
+TargetCurve stationary_rear_axle_target_curve(double curvature_before, double curvature,
+                                              double curvature_after, double step_m,
+                                              double chain_length_squared) noexcept {
   const double before = rear_axle_cornering_offset(curvature_before, chain_length_squared);
   const double at = rear_axle_cornering_offset(curvature, chain_length_squared);
   const double after = rear_axle_cornering_offset(curvature_after, chain_length_squared);
@@ -20,6 +21,73 @@ TargetCurve rear_axle_target_curve(double curvature_before, double curvature,
   target.offset = at;
   target.heading = std::atan(slope / scale);
   target.curvature = curvature / scale + bend;
+  return target;
+}
+
+CurvatureJet curvature_jet(double before, double at, double after) noexcept {
+  constexpr double h = curvature_jet_step_m;
+  return {at, (after - before) / (2.0 * h), (after - 2.0 * at + before) / (h * h)};
+}
+
+ChainInverse invert_chain(const CurvatureJet& rear, const double* wheelbases, int order) noexcept {
+  // Stage i + 1 takes kappa_i as a jet in the rear's arc length s (value, d/ds, d2/ds2) and the
+  // stretch g = ds_i / ds with its slope. sigma = kappa c with c = (1 + lambda^2 kappa^2)^(-1/2),
+  // so sigma' = kappa' c^3 and sigma'' = kappa'' c^3 - 3 lambda^2 kappa kappa'^2 c^5; then
+  // kappa_{i+1} = sigma + lambda sigma' / g (the stage's lag inverted, d/ds_i = (1/g) d/ds).
+  ChainInverse inverse;
+  double value = rear.value, slope = rear.slope, bend = rear.bend;
+  double stretch = 1.0, stretch_slope = 0.0;
+  for (int i = 0; i < order; ++i) {
+    const double lambda = wheelbases[i];
+    const double c = 1.0 / std::sqrt(1.0 + lambda * lambda * value * value);
+    const double c3 = c * c * c;
+    const double sigma = value * c;
+    const double sigma_slope = slope * c3;
+    const double sigma_bend =
+        bend * c3 - 3.0 * lambda * lambda * value * slope * slope * c3 * c * c;
+    inverse.angles[static_cast<std::size_t>(i)] = std::atan(lambda * value);
+    const double next_value = sigma + lambda * sigma_slope / stretch;
+    const double next_slope =
+        sigma_slope +
+        lambda * (sigma_bend * stretch - sigma_slope * stretch_slope) / (stretch * stretch);
+    // ds_{i+1} / ds = g sec(delta_{i+1}) = g / c.
+    stretch_slope = stretch_slope / c + stretch * lambda * lambda * value * slope * c;
+    stretch /= c;
+    value = next_value, slope = next_slope, bend = 0.0;  // the jet has no third derivative
+  }
+  inverse.lead_curvature = value;
+  return inverse;
+}
+
+double chain_reach(const double* wheelbases, int order) noexcept {
+  double reach = 0.0;
+  for (int i = 0; i < order; ++i) reach += wheelbases[i];
+  return reach;
+}
+
+TargetCurve rear_axle_target_curve(const Path& path, const PathProjection& lead,
+                                   const CurvatureJet& rear, const double* wheelbases,
+                                   int order) noexcept {
+  const ChainInverse chain = invert_chain(rear, wheelbases, order);
+  const PathPoint rear_point = path.evaluate(lead.arc_length_m - chain_reach(wheelbases, order));
+  ChainGeometry geometry;
+  chain_geometry(rear_point.position, rear_point.heading_rad, chain.angles, wheelbases, order,
+                 geometry);
+  const auto n = static_cast<std::size_t>(order);
+  // The target point in the path's frame at `lead` (a along the tangent, b to the left), projected
+  // onto the path's osculating circle there (curvature k; the forms below have no cancellation
+  // for small k): offset (2 b - k (a^2 + b^2)) / (1 + hypot(k a, k b - 1)), the path's heading
+  // turns by atan2(k a, 1 - k b) up to the foot, which lies that angle / |k| along the path.
+  const Vec2 gap = geometry.position[n] - lead.closest_point;
+  const Vec2 tangent = unit_from_heading(lead.heading_rad);
+  const double a = dot(tangent, gap), b = cross(tangent, gap), k = lead.curvature;
+  const double offset = (2.0 * b - k * (a * a + b * b)) / (1.0 + std::hypot(k * a, k * b - 1.0));
+  const double turn = std::atan2(k * a, 1.0 - k * b);
+  const double foot = std::abs(k * a) < 1e-9 ? a : turn / k;
+  TargetCurve target;
+  target.heading = wrap_angle(geometry.heading[n] - lead.heading_rad - turn);
+  target.offset = offset - foot * std::tan(target.heading);
+  target.curvature = chain.lead_curvature;
   return target;
 }
 

@@ -13,9 +13,6 @@
 namespace smoothsteer {
 namespace {
 
-//! Step of the central differences of the rear-axle target curve [m] (rear_axle_target_curve).
-constexpr double kTargetCurveStep = 0.5;
-
 bool finite(double value) noexcept {
   return std::isfinite(value);
 }
@@ -43,12 +40,11 @@ void LeadWheelController::apply_parameters(const ControllerParameters& parameter
   bounds_ = compute_chain_bounds(parameters_);
   certificate_ = feedforward_certificate(parameters_, bounds_);
   chain_length_squared_ = 0.0;
-  chain_reach_ = 0.0;
+  chain_reach_ = chain_reach(parameters_.wheelbases_m.data(), parameters_.order);
   double shortest = parameters_.order > 0 ? parameters_.wheelbases_m[0] : 0.0;
   for (int i = 0; i < parameters_.order; ++i) {
     const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared_ += lambda * lambda;
-    chain_reach_ += lambda;
     shortest = std::min(shortest, lambda);
   }
   largest_substep_m_ = parameters_.max_substep_fraction * shortest;
@@ -162,32 +158,57 @@ double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
 
 TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const noexcept {
   // The path's curvature as the rate-limited feedforward should see it (feedforward.hpp): with a
-  // finite L_ff the previewed samples (a jump becomes a ramp centred on it), else the
-  // projection's own value and the path at +- one step.
+  // finite L_ff the previewed samples (a jump becomes a ramp centred on it), else the path at s
+  // and +- one step. The exact rear-axle target reads it at the rear axle, a chain's reach
+  // behind the lead wheel; the others at the lead wheel. All read `dynamics_preview_m_` ahead.
   const double rate = parameters_.feedforward_curvature_rate;
-  const bool rear_target = parameters_.cornering_target == CorneringTarget::rear_axle;
+  const CorneringTarget kind = parameters_.cornering_target;
+  const bool exact = kind == CorneringTarget::rear_axle_exact;
+  const double s = lead.arc_length_m + dynamics_preview_m_ - (exact ? chain_reach_ : 0.0);
+  const bool limited = std::isfinite(rate) && rate > 0.0;
   PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
-  if (std::isfinite(rate) && rate > 0.0) {
+  if (exact) {
+    // The exact target needs the curvature's first two derivatives, so a jump always becomes a
+    // centred ramp: at L_ff, or without a rate limit over the chain's reach. The samples keep
+    // the path's own magnitude; the feedforward is clamped to kbar_ff afterwards.
+    const double bound = std::max(path_->max_abs_curvature(), 1e-12);
+    const double ramp_rate = limited ? rate : bound / std::max(chain_reach_, curvature_jet_step_m);
+    curvature = preview_curvature(*path_, s, curvature_jet_step_m, ramp_rate, bound);
+  } else if (limited) {
     const double bound = std::max(parameters_.feedforward_curvature_bound(), 1e-12);
-    curvature = preview_curvature(*path_, lead.arc_length_m + dynamics_preview_m_, kTargetCurveStep,
-                                  rate, bound);
-  } else if (rear_target || dynamics_preview_m_ > 0.0) {
-    const double s = lead.arc_length_m + dynamics_preview_m_;
-    if (dynamics_preview_m_ > 0.0) curvature.at = path_->evaluate(s).curvature;
-    curvature.before = path_->evaluate(s - kTargetCurveStep).curvature;
-    curvature.after = path_->evaluate(s + kTargetCurveStep).curvature;
+    curvature = preview_curvature(*path_, s, curvature_jet_step_m, rate, bound);
+  } else if (kind == CorneringTarget::rear_axle || dynamics_preview_m_ > 0.0) {
+    curvature.at = path_->evaluate(s).curvature;
+    curvature.before = path_->evaluate(s - curvature_jet_step_m).curvature;
+    curvature.after = path_->evaluate(s + curvature_jet_step_m).curvature;
   }
-  if (!rear_target) return {0.0, 0.0, curvature.at};
-  // With a plant disturbance kappa_d the chain is stationary on kappa - kappa_d while the rear
-  // axle follows kappa: the lead wheel's offset is that of the chain's stationary shape,
-  // e0(kappa - kappa_d), minus the path's extra bend over the chain's reach l = sum lambda_i,
-  // kappa_d l^2 / 2 (docs/feedforward.md, "disturbances on the vehicle"); the curve itself keeps
-  // the path's curvature.
+  // The single-track inversion (ControllerParameters::preview_time_s): gain and second-order
+  // correction on top of the preview; then, with a plant disturbance kappa_d, the chain runs on
+  // kappa - kappa_d while the rear axle follows kappa (docs/feedforward.md, "disturbances on the
+  // vehicle").
+  CurvatureJet jet = curvature_jet(curvature.before, curvature.at, curvature.after);
+  jet.value = dynamics_gain_ * jet.value + dynamics_bend_m2_ * jet.bend;
+  jet.slope *= dynamics_gain_;
+  jet.bend *= dynamics_gain_;
+  if (kind == CorneringTarget::lead_wheel) return {0.0, 0.0, jet.value};
   const double d = disturbance_estimate_;
-  TargetCurve target =
-      rear_axle_target_curve(curvature.before - d, curvature.at - d, curvature.after - d,
-                             kTargetCurveStep, chain_length_squared_);
-  target.offset -= 0.5 * d * chain_reach_ * chain_reach_;
+  TargetCurve target;
+  if (exact) {
+    // The chain's angles come from kappa - kappa_d, the lead wheel's position from the path's
+    // own geometry, so its curve bends by kappa_d more than the chain's input.
+    jet.value -= d;
+    target = rear_axle_target_curve(*path_, lead, jet, parameters_.wheelbases_m.data(),
+                                    parameters_.order);
+  } else {
+    // The chain's stationary shape on kappa - kappa_d, minus the path's extra bend over the
+    // chain's reach l = sum lambda_i, kappa_d l^2 / 2.
+    constexpr double h = curvature_jet_step_m;
+    const double before = jet.value - h * jet.slope + 0.5 * h * h * jet.bend;
+    const double after = jet.value + h * jet.slope + 0.5 * h * h * jet.bend;
+    target = stationary_rear_axle_target_curve(before - d, jet.value - d, after - d, h,
+                                               chain_length_squared_);
+    target.offset -= 0.5 * d * chain_reach_ * chain_reach_;
+  }
   target.curvature += d;
   return target;
 }
@@ -283,8 +304,18 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   update_disturbance_estimate(input);
   // Where the feedforward reads the path (ControllerParameters::preview_time_s).
   const double speed_magnitude = std::abs(input.speed_mps);
-  dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude +
-                        parameters_.rear_slip_gradient_s2pm * speed_magnitude * speed_magnitude;
+  {
+    const double rear = parameters_.rear_slip_gradient_s2pm;
+    const double front = parameters_.front_slip_gradient_s2pm;
+    const double v2 = speed_magnitude * speed_magnitude;
+    const double lag = (front + rear) * v2;  // L (K_f + K_r) v^2 kappa' / L
+    dynamics_gain_ = std::max(0.5, 1.0 + (front - rear) * v2 / parameters_.vehicle_wheelbase_m);
+    dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude + lag / dynamics_gain_;
+    // g kappa(s + d) carries lag^2 / (2 g) kappa''; the model asks K_f K_r v^4 kappa''.
+    dynamics_bend_m2_ = parameters_.slip_preview_second_order
+                            ? front * rear * v2 * v2 - 0.5 * lag * lag / dynamics_gain_
+                            : 0.0;
+  }
   // With a known actuator delay the law acts on the pose at which this command will take effect.
   const Pose2 law_pose = predicted_pose(input);
 

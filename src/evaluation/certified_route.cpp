@@ -55,9 +55,7 @@ TuningOptions certified_route_options(const io::Scenario& scenario,
   options.certificate = Certificate::feedforward;
   options.base = committed.base;
   options.order = committed.order;
-  const PathDemand demand = path_demand(*scenario.path);
-  options.path_curvature_bound = demand.max_curvature;
-  options.path_curvature_rate_bound = demand.max_curvature_rate;
+  apply_path_demand(options, scenario.path);
   if (scenario.speed.acceleration_mps2 > 0.0 &&
       scenario.speed.final_speed_mps != scenario.speed.initial_speed_mps) {
     options.max_longitudinal_acceleration_mps2 = scenario.speed.acceleration_mps2;

@@ -42,11 +42,14 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
       "disturbance_estimation_length_m", defaults.disturbance_estimation_length_m, {0.0, 1000.0});
   p.preview_time_s = c.number("preview_time_s", defaults.preview_time_s,
                               {0.0, ControllerParameters::max_actuator_delay_s});
-  // slip_preview: the feedforward looks K_r v^2 further ahead, K_r from the vehicle file.
-  p.rear_slip_gradient_s2pm = c.boolean("slip_preview", defaults.rear_slip_gradient_s2pm > 0.0)
-                                  ? std::min(vehicle.rear_slip_gradient(),
-                                             ControllerParameters::max_rear_slip_gradient_s2pm)
-                                  : 0.0;
+  // slip_preview: the feedforward inverts the single-track model's lateral dynamics, with K_r
+  // and K_f from the vehicle file.
+  const bool slip_preview = c.boolean("slip_preview", defaults.rear_slip_gradient_s2pm > 0.0);
+  const double most = ControllerParameters::max_rear_slip_gradient_s2pm;
+  p.rear_slip_gradient_s2pm = slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0;
+  p.front_slip_gradient_s2pm = slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0;
+  p.slip_preview_second_order =
+      c.boolean("slip_preview_second_order", defaults.slip_preview_second_order);
   // friction_guard: never ask more than the tires' mu g (vehicle file) of lateral acceleration.
   p.max_lateral_acceleration_mps2 =
       c.boolean("friction_guard", std::isfinite(defaults.max_lateral_acceleration_mps2))
@@ -61,11 +64,18 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
   const std::string surface =
       c.text("surface", paper_surface ? "paper" : "global", {"global", "paper"});
   p.surface = surface == "paper" ? SlidingSurface::paper : SlidingSurface::global;
-  const bool lead_target = defaults.cornering_target == CorneringTarget::lead_wheel;
-  const std::string target = c.text("cornering_target", lead_target ? "lead_wheel" : "rear_axle",
-                                    {"lead_wheel", "rear_axle"});
-  p.cornering_target =
-      target == "rear_axle" ? CorneringTarget::rear_axle : CorneringTarget::lead_wheel;
+  const char* names[] = {"rear_axle", "rear_axle_exact", "lead_wheel"};
+  const CorneringTarget kinds[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
+                                   CorneringTarget::lead_wheel};
+  std::string fallback = names[0];
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (kinds[k] == defaults.cornering_target) fallback = names[k];
+  }
+  const std::string target =
+      c.text("cornering_target", fallback, {"lead_wheel", "rear_axle", "rear_axle_exact"});
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (target == names[k]) p.cornering_target = kinds[k];
+  }
   p.max_substep_fraction =
       c.number("max_substep_fraction", defaults.max_substep_fraction, {0.0, 1.0, true, false});
   p.max_substeps = c.integer("max_substeps", defaults.max_substeps, 1, 10000);

@@ -9,6 +9,7 @@
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/invariant_bounds.hpp"
+#include "smoothsteer/tuning/path_demand.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -22,6 +23,13 @@ struct SpeedProblem {
   const TuningOptions& options;
   double speed = 0.0;
   double lead_wheelbase = 0.0;  //!< lambda_l (0 for n = 1)
+  //! The curvature rate the feedforward should follow [1/m^2]; < 0: the options' path rate.
+  double feedforward_rate_demand = -1.0;
+
+  double rate_demand() const {
+    return feedforward_rate_demand >= 0.0 ? feedforward_rate_demand
+                                          : options.path_curvature_rate_bound;
+  }
 
   ScheduleEntry entry(double feedforward_bound, double feedforward_rate,
                       double switching_bound) const {
@@ -79,6 +87,11 @@ double largest(double high, Ok&& ok) {
   return low;
 }
 
+//! The i-th of `nodes` candidate lead wheelbases, i = 1..nodes.
+double lead_wheelbase_node(const VehicleLimits& vehicle, int i, int nodes) {
+  return vehicle.wheelbase_m * 0.98 * i / nodes;
+}
+
 //! The best entry for one lead wheelbase, or an entry with lead_curvature_bound 0 if none.
 ScheduleEntry solve_node(const SpeedProblem& problem) {
   const TuningOptions& o = problem.options;
@@ -93,7 +106,7 @@ ScheduleEntry solve_node(const SpeedProblem& problem) {
       ScheduleEntry e = problem.entry(feedforward_bound, rate, tiny);
       return problem.certify(e);
     });
-    feedforward_rate = std::min(std::max(o.feedforward_rate_margin * o.path_curvature_rate_bound,
+    feedforward_rate = std::min(std::max(o.feedforward_rate_margin * problem.rate_demand(),
                                          feedforward_bound / o.feedforward_ramp_length_m),
                                 o.feedforward_rate_share * budget);
   }
@@ -157,14 +170,30 @@ GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
                                           const TuningOptions& options,
                                           const std::vector<double>& speeds_mps) {
   check_schedule_inputs(vehicle, options, speeds_mps);
+  // The lead wheel's curvature rate on the reference path, per lead wheelbase (it depends on the
+  // chain, not on the speed).
+  const int nodes = options.order == 2 ? kLeadWheelbaseNodes : 1;
+  std::vector<double> rate_demands(static_cast<std::size_t>(nodes), -1.0);
+  if (options.reference_path && std::isfinite(options.path_curvature_rate_bound)) {
+    for (int i = 1; i <= nodes; ++i) {
+      ScheduleEntry probe;
+      probe.lead_wheelbase_m = options.order == 2 ? lead_wheelbase_node(vehicle, i, nodes) : 0.0;
+      probe.lead_curvature_bound = 1e-3;
+      probe.k_rob = options.k_rob_floor;
+      const ControllerParameters p = schedule_entry_parameters(options, vehicle.wheelbase_m, probe);
+      rate_demands[static_cast<std::size_t>(i - 1)] = std::max(
+          options.path_curvature_rate_bound,
+          lead_curvature_rate_demand(*options.reference_path, p.wheelbases_m.data(), p.order));
+    }
+  }
   std::vector<ScheduleEntry> entries;
   entries.reserve(speeds_mps.size());
   for (const double v : speeds_mps) {
     ScheduleEntry best;
-    const int nodes = options.order == 2 ? kLeadWheelbaseNodes : 1;
     for (int i = 1; i <= nodes; ++i) {
-      const double lead = vehicle.wheelbase_m * 0.98 * i / nodes;
-      const ScheduleEntry e = solve_node({vehicle, options, v, lead});
+      const double lead = lead_wheelbase_node(vehicle, i, nodes);
+      const ScheduleEntry e =
+          solve_node({vehicle, options, v, lead, rate_demands[static_cast<std::size_t>(i - 1)]});
       // O3: the largest switching authority; O4: ties keep the shorter lead wheelbase.
       if (e.lead_curvature_bound > best.lead_curvature_bound * (1.0 + 1e-9)) best = e;
     }

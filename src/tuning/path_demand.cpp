@@ -1,5 +1,7 @@
 #include "smoothsteer/tuning/path_demand.hpp"
 
+#include "smoothsteer/controller/feedforward.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -42,6 +44,43 @@ PathDemand path_demand(const Path& path, double spacing_m) {
   PathDemand demand =
       sampled_demand(path, spacing_m, [&](double s) { return path.evaluate(s).curvature; });
   demand.max_curvature = std::max(demand.max_curvature, path.max_abs_curvature());
+  return demand;
+}
+
+double lead_curvature_rate_demand(const Path& path, const double* wheelbases, int order) {
+  if (order <= 0) return 0.0;
+  constexpr double h = curvature_jet_step_m;
+  const auto samples = static_cast<long>(std::ceil(path.length() / h));
+  // Samples inside [0, L] only: the straight end extensions would add a jump that no vehicle
+  // starting on the path meets.
+  auto curvature = [&](long k) {
+    return path
+        .evaluate(std::min(path.length(), static_cast<double>(std::clamp(k, 0L, samples)) * h))
+        .curvature;
+  };
+  double before = curvature(-1), at = curvature(0), after = curvature(1);
+  double previous =
+      invert_chain(curvature_jet(before, at, after), wheelbases, order).lead_curvature;
+  double demand = 0.0;
+  for (long k = 1; k <= samples; ++k) {
+    before = at, at = after, after = curvature(k + 1);
+    const double lead =
+        invert_chain(curvature_jet(before, at, after), wheelbases, order).lead_curvature;
+    demand = std::max(demand, std::abs(lead - previous) / h);
+    previous = lead;
+  }
+  return demand;
+}
+
+PathDemand apply_path_demand(TuningOptions& options, std::shared_ptr<const Path> path) {
+  if (!path) return {};
+  const PathDemand demand = path_demand(*path);
+  options.path_curvature_bound = std::max(options.path_curvature_bound, demand.max_curvature);
+  options.path_curvature_rate_bound =
+      std::isinf(options.path_curvature_rate_bound)
+          ? demand.max_curvature_rate
+          : std::max(options.path_curvature_rate_bound, demand.max_curvature_rate);
+  options.reference_path = std::move(path);
   return demand;
 }
 

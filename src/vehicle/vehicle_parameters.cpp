@@ -59,6 +59,10 @@ double VehicleParameters::rear_slip_gradient() const noexcept {
   return mass_kg * cg_to_front_axle_m / (wheelbase_m() * rear_cornering_stiffness_npr());
 }
 
+double VehicleParameters::front_slip_gradient() const noexcept {
+  return mass_kg * cg_to_rear_axle_m / (wheelbase_m() * front_cornering_stiffness_npr());
+}
+
 std::optional<Violation> VehicleParameters::first_violation() const noexcept {
   auto bad = [](const char* field, double value, const char* rule) {
     return Violation{owner, "", field, value, rule};

@@ -28,7 +28,9 @@ ControllerParameters random_feedforward_parameters(Random& random, int order) {
   p.feedforward_share = random.uniform(0.0, 0.9);
   p.feedforward_curvature_rate = random.uniform(0.001, 0.05);
   p.boundary_layer = random.coin() ? 0.0 : random.uniform(0.005, 0.05);
-  p.cornering_target = random.coin() ? CorneringTarget::rear_axle : CorneringTarget::lead_wheel;
+  const CorneringTarget targets[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
+                                     CorneringTarget::lead_wheel};
+  p.cornering_target = targets[random.integer(0, 2)];
   return p;
 }
 
@@ -36,8 +38,8 @@ std::string describe_case(const ControllerParameters& p, const char* path, const
   std::ostringstream text;
   text << describe(p) << " share=" << p.feedforward_share
        << " L_ff=" << p.feedforward_curvature_rate << " eps=" << p.boundary_layer
-       << " path=" << path << " start=(" << start.position.x << "," << start.position.y << ","
-       << start.heading_rad << ")";
+       << " target=" << static_cast<int>(p.cornering_target) << " path=" << path << " start=("
+       << start.position.x << "," << start.position.y << "," << start.heading_rad << ")";
   return text.str();
 }
 
@@ -131,7 +133,9 @@ TEST(FeedforwardCertificate, ConvergesFromFarStartsOnCurvedPaths) {
     ControllerParameters p = random_feedforward_parameters(random, random.integer(1, 2));
     p.feedforward_share = random.uniform(0.4, 0.8);
     p.boundary_layer = 0.01;
-    p.cornering_target = CorneringTarget::rear_axle;  // the rear axle itself converges
+    // The rear axle itself converges, with either rear-axle target.
+    p.cornering_target =
+        random.coin() ? CorneringTarget::rear_axle : CorneringTarget::rear_axle_exact;
     const auto kind = random.coin() ? PathKind::circle : PathKind::line;
     const auto path = random_path(random, kind, 0.9 * p.feedforward_curvature_bound());
     const Pose2 start{{random.uniform(-80.0, 80.0), random.uniform(-80.0, 80.0)},

@@ -23,10 +23,10 @@ std::string source_file(const std::string& relative) {
 
 TEST(CertifiedRoute, ReproducesTheCommittedCircleSectionsSchedule) {
   // scenarios/circle_sections.yaml: tune --speeds 0.5:13:0.5 --max-longitudinal-acceleration 0.5
-  // --feedforward-rate-share 0.3 --path scenarios/circle_sections.yaml.
+  // --feedforward-rate-share 0.5 --path scenarios/circle_sections.yaml.
   const io::Scenario scenario = io::load_scenario(source_file("scenarios/circle_sections.yaml"));
   const TuningOptions options =
-      certified_route_options(scenario, {{"feedforward_rate_share", 0.3}});
+      certified_route_options(scenario, {{"feedforward_rate_share", 0.5}});
   const GainSchedule computed = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
                                                              certified_speed_grid(scenario));
   const GainSchedule committed = read_schedule_csv(

@@ -242,6 +242,10 @@ TEST(VehicleDynamicsValidation, EveryNewParameterIsNamed) {
             }).find("rear_slip_gradient_s2pm"),
             std::string::npos);
   EXPECT_NE(controller_error([](ControllerParameters& p) {
+              p.front_slip_gradient_s2pm = -0.01;
+            }).find("front_slip_gradient_s2pm"),
+            std::string::npos);
+  EXPECT_NE(controller_error([](ControllerParameters& p) {
               p.max_lateral_acceleration_mps2 = 0;
             }).find("max_lateral_acceleration_mps2"),
             std::string::npos);

@@ -24,6 +24,11 @@ enum class CorneringTarget {
   //! The lead wheel runs on a parallel offset of the path such that, in stationary cornering,
   //! the REAR AXLE lies exactly on the path (docs/controller.md, "cornering offset").
   rear_axle,
+  //! The lead wheel runs where the chain puts it while the rear axle runs EXACTLY on the path,
+  //! also while the curvature changes: the chain's inverse (docs/feedforward.md, "exact
+  //! rear-axle target"). Exact on smooth paths whose curvature the feedforward can follow; where
+  //! the feedforward saturates (kbar_ff or L_ff) the stationary rear_axle target is more forgiving.
+  rear_axle_exact,
   //! The lead wheel itself runs on the path, as in the paper. With the fictive wheelbase of
   //! eq. (cornering_constr) the real front wheel then lies on the path and the rear axle cuts
   //! the corner by about lambda_veh^2 / (2 R).
@@ -76,13 +81,14 @@ struct ControllerParameters {
   //! still in the pipe (a Smith predictor). At most max_actuator_delay_s.
   double actuator_delay_s = 0.0;
   static constexpr double max_actuator_delay_s = 1.0;
-  //! Dynamics preview (docs/vehicle_dynamics.md): the feedforward reads the path's curvature
-  //! d = preview_time_s |v| + rear_slip_gradient v^2 metres ahead of the lead wheel. On a
-  //! single-track car the rear axle's course lags its heading by the rear side slip
-  //! beta_r = -K_r a_y, K_r = m lf / (L Cr): in distance, a delay of K_r v^2 between the
-  //! steering and the course (with ControllerInput::rear_axle_side_slip_rad, which the law
-  //! steers). The preview only moves where kappa_ff looks, so |kappa_ff| <= kbar_ff and
-  //! |d kappa_ff / ds| <= L_ff, and the certificate, hold unchanged. 0 = off.
+  //! Dynamics inversion of the feedforward (docs/vehicle_dynamics.md, section 3). On the linear
+  //! single-track model with yaw inertia m lf lr the rear axle's course curvature kappa follows
+  //! the steering as delta = L kappa + (K_f - K_r) v^2 kappa + L (K_f + K_r) v^2 kappa'
+  //! + L K_f K_r v^4 kappa'' (' = d/ds), with the slip gradients K_r = m lf / (L Cr) and
+  //! K_f = m lr / (L Cf). The feedforward therefore aims the chain at g kappa(s + d) plus a
+  //! second-order correction, g = 1 + (K_f - K_r) v^2 / L, d = (K_f + K_r) v^2 / g, reading the
+  //! path d + preview_time_s |v| metres further ahead. The result still passes the clamp to
+  //! +-kbar_ff and the rate limit L_ff, so the certificate holds unchanged. 0 = off.
   double preview_time_s = 0.0;  //!< [s], in [0, max_actuator_delay_s]
   //! Disturbance estimation (docs/feedforward.md, "disturbances on the vehicle"): a curvature
   //! the plant adds at the rear axle (understeer, a banked road, a steering offset) is estimated
@@ -91,7 +97,12 @@ struct ControllerParameters {
   //! only through kappa_ff, so |kappa_ff| <= kbar_ff, its rate limit and the certificate hold.
   //! 0 = off; else in [1, 1000] m.
   double disturbance_estimation_length_m = 0.0;
-  double rear_slip_gradient_s2pm = 0.0;  //!< K_r [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
+  double rear_slip_gradient_s2pm = 0.0;   //!< K_r [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
+  double front_slip_gradient_s2pm = 0.0;  //!< K_f [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
+  //! With the second-order term K_f K_r v^4 kappa'' of the single-track inversion (true), or
+  //! only its preview and gain (false). Near the friction limit the linear model over-corrects
+  //! with it (docs/vehicle_dynamics.md, section 3).
+  bool slip_preview_second_order = true;
   static constexpr double max_rear_slip_gradient_s2pm = 0.1;
   //! Friction guard (docs/vehicle_dynamics.md): at speed v the lead wheel's curvature stays
   //! within the curvature whose stationary rear-axle curvature is a_max / v^2, so the car never

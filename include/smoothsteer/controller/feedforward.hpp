@@ -4,6 +4,7 @@
 //! tracks, the curvature that keeps it there, and the preview that starts a rate-limited
 //! feedforward ramp before a change of the path's curvature instead of after it.
 
+#include "smoothsteer/controller/trailer_chain.hpp"
 #include "smoothsteer/path/path.hpp"
 
 namespace smoothsteer {
@@ -20,9 +21,48 @@ struct TargetCurve {
 //! heading atan(e0' / (1 - kappa e0)) and curvature kappa / (1 - kappa e0) + e0'' with e0', e0''
 //! by central differences over h (docs/feedforward.md, "moving offset"). Without the e0' and e0''
 //! terms, a path whose curvature changes leaves them to the switching part.
-TargetCurve rear_axle_target_curve(double curvature_before, double curvature,
-                                   double curvature_after, double step_m,
-                                   double chain_length_squared) noexcept;
+TargetCurve stationary_rear_axle_target_curve(double curvature_before, double curvature,
+                                              double curvature_after, double step_m,
+                                              double chain_length_squared) noexcept;
+
+//! The path's curvature at the rear axle and its first two derivatives along the arc length.
+struct CurvatureJet {
+  double value = 0.0;  //!< kappa [1/m]
+  double slope = 0.0;  //!< d kappa / ds [1/m^2]
+  double bend = 0.0;   //!< d2 kappa / ds2 [1/m^3]
+};
+
+//! Step of the central differences of the curvature jet [m] (the path's curvature samples are
+//! 0.5 m apart): the controller and the tuner's demand (lead_curvature_rate_demand) use it both.
+inline constexpr double curvature_jet_step_m = 0.5;
+//! The jet from the curvature at s - curvature_jet_step_m, s and s + curvature_jet_step_m.
+CurvatureJet curvature_jet(double before, double at, double after) noexcept;
+
+//! The chain's state while the rear axle runs exactly on a path of curvature `rear` (docs/
+//! feedforward.md, "exact rear-axle target"): each stage is the lag d sigma_{i-1} / d s_{i-1} =
+//! (kappa_i - sigma_{i-1}) / lambda_i in sigma_{i-1} = sin(delta_i) / lambda_i, so it inverts to
+//! kappa_i = sigma_{i-1} + lambda_i d sigma_{i-1} / d s_{i-1}, stage by stage from the rear, with
+//! tan(delta_i) = lambda_i kappa_{i-1} and ds_i / ds_{i-1} = sec(delta_i). Each stage uses one more
+//! derivative of the rear's curvature; the jet has two, so orders above 2 drop the third.
+struct ChainInverse {
+  ChainAngles angles{};         //!< delta_i [rad]
+  double lead_curvature = 0.0;  //!< kappa_n [1/m]: the lead wheel's curvature
+};
+ChainInverse invert_chain(const CurvatureJet& rear, const double* wheelbases, int order) noexcept;
+
+//! The exact rear-axle target (CorneringTarget::rear_axle_exact): where the lead wheel runs when
+//! the rear axle is on the path. The rear axle sits a chain's reach behind the lead wheel's
+//! closest point `lead`; the chain's pose there (invert_chain with the curvature jet `rear`, the
+//! path's position and heading at that point) puts the lead wheel at a point whose offset from the
+//! path, heading relative to it and curvature are the target's. That point lies centimetres from
+//! `lead`, so the path is taken as its osculating circle at `lead` there; the offset is carried to
+//! the lead wheel's own closest point along the target's heading. One Path::evaluate.
+TargetCurve rear_axle_target_curve(const Path& path, const PathProjection& lead,
+                                   const CurvatureJet& rear, const double* wheelbases,
+                                   int order) noexcept;
+
+//! The arc length by which the rear axle trails the lead wheel along a straight path: sum lambda_i.
+double chain_reach(const double* wheelbases, int order) noexcept;
 
 //! Curvature feedforward (docs/feedforward.md): the curvature with which a Dubins car at lateral
 //! error e from a target curve of curvature kappa_t, heading psi relative to that curve, keeps

@@ -112,6 +112,10 @@ class LeadWheelController final : public SteeringController {
   SteeringCertificate certificate_;
   double feedforward_curvature_ = 0.0;
   double dynamics_preview_m_ = 0.0;
+  //! Single-track inversion at the current speed (ControllerParameters::preview_time_s): the
+  //! chain aims at dynamics_gain_ kappa(s + dynamics_preview_m_) + dynamics_bend_ kappa''.
+  double dynamics_gain_ = 1.0;
+  double dynamics_bend_m2_ = 0.0;
   double disturbance_estimate_ = 0.0;  //!< kappa_d estimate [1/m]
   Vec2 previous_position_{};           //!< rear axle at the last update()
   double previous_course_ = 0.0;       //!< psi + beta_r at the last update()

@@ -14,11 +14,13 @@
 //! and O1. n >= 3 is not supported (docs/tuning.md says how far the generalization goes).
 
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/path/path.hpp"
 #include "smoothsteer/tuning/static_map.hpp"
 #include "smoothsteer/tuning/vehicle_limits.hpp"
 #include "smoothsteer/validation.hpp"
@@ -50,6 +52,10 @@ struct TuningOptions {
   //! Largest |d kappa / ds| of the reference path [1/m^2] (+inf: unknown or with jumps); the
   //! feedforward's rate limit L_ff covers it with feedforward_rate_margin where the budget allows.
   double path_curvature_rate_bound = std::numeric_limits<double>::infinity();
+  //! The reference path itself, if known (apply_path_demand sets it): the feedforward's rate
+  //! limit then covers the lead wheel's curvature rate on it (lead_curvature_rate_demand), which
+  //! the rear-axle target asks for, with feedforward_rate_margin where the budget allows.
+  std::shared_ptr<const Path> reference_path;
   //! kbar_ff = headroom * path_curvature_bound (where the friction and angle limits allow): the
   //! rear-axle target and the dynamics preview ask the lead wheel for more curvature than the
   //! path's own peak (docs/vehicle_dynamics.md). 1 = exactly the path's peak.

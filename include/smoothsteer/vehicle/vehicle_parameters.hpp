@@ -63,6 +63,8 @@ struct VehicleParameters {
   //! K_r = m lf / (L Cr) [rad / (m/s^2)]: stationary rear-axle side slip per lateral
   //! acceleration of the linear model, beta_r = -K_r a_y (the rear tire carries m a_y lf / L).
   double rear_slip_gradient() const noexcept;
+  //! K_f = m lr / (L Cf) [s^2/m]: the front axle's slip angle per lateral acceleration.
+  double front_slip_gradient() const noexcept;
   //! Friction limit of the lateral acceleration, min(mu_f, mu_r) g [m/s^2].
   double friction_limit_mps2() const noexcept;
 
