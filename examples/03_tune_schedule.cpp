@@ -1,10 +1,10 @@
 // Example 3: tune for your car and drive the schedule. The car's steering limits (vehicle YAML)
 // and the path's curvature give certified parameters over speed (docs/tuning.md); the scheduled
 // controller then drives a 40 m circle while the car speeds up from 5 to 15 m/s.
+#include <smoothsteer/io/schedule_files.hpp>
 #include <smoothsteer/smoothsteer.hpp>
 #include <smoothsteer/tuning/gain_schedule.hpp>
 #include <smoothsteer/tuning/path_demand.hpp>
-#include <smoothsteer/tuning/schedule_files.hpp>
 #include <smoothsteer/tuning/scheduled_controller.hpp>
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 
 int main() {
   using namespace smoothsteer;
-  const VehicleLimits car = load_vehicle_limits("vehicles/passenger_car.yaml");
+  const VehicleLimits car = io::load_vehicle_limits("vehicles/passenger_car.yaml");
   auto path = std::make_shared<const Path>(Path::circle({0.0, 0.0}, 40.0));
   TuningOptions options;  // the feedforward route
   options.path_curvature_bound = path_demand(*path).max_curvature;

@@ -2,7 +2,7 @@
 // scenario's `vehicle: {file: ...}`.
 #include "fuzz_support.hpp"
 #include "smoothsteer/io/scenario.hpp"
-#include "smoothsteer/tuning/schedule_files.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace smoothsteer;
@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                true);
   (void)written;
   const std::string file = fuzz::write_scratch("vehicle.yaml", data, size);
-  fuzz::expect_accept_or_reject([&] { load_vehicle_limits(file); });
+  fuzz::expect_accept_or_reject([&] { io::load_vehicle_limits(file); });
   fuzz::expect_accept_or_reject(
       [&] { io::load_scenario((fuzz::scratch_directory() / "with_vehicle.yaml").string()); });
   return 0;

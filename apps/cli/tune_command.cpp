@@ -14,9 +14,9 @@
 #include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/path_demand.hpp"
-#include "smoothsteer/tuning/schedule_files.hpp"
 
 namespace smoothsteer::cli {
 namespace {
@@ -99,7 +99,7 @@ std::shared_ptr<const Path> load_path_file(const std::string& file) {
 }
 
 void run_tune(const TuneArguments& arguments) {
-  VehicleLimits vehicle = load_vehicle_limits(arguments.vehicle_file);
+  VehicleLimits vehicle = io::load_vehicle_limits(arguments.vehicle_file);
   if (!std::isnan(arguments.max_steering_rate)) {
     vehicle.max_steering_rate_radps = arguments.max_steering_rate;
   }
@@ -130,7 +130,7 @@ void run_tune(const TuneArguments& arguments) {
                                                   std::min(1.49, vehicle.max_steering_angle_rad));
     schedule = compute_gain_schedule(vehicle, options, speeds, StaticMap(map_options));
   }
-  write_schedule_csv(schedule, arguments.out);
+  io::write_schedule_csv(schedule, arguments.out);
   std::cout << "vehicle " << arguments.vehicle_file << ": lambda_veh " << vehicle.wheelbase_m
             << " m, limits " << vehicle.max_steering_angle_rad << " rad, "
             << vehicle.max_steering_rate_radps << " rad/s, "

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/path_demand.hpp"
-#include "smoothsteer/tuning/schedule_files.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 
 namespace smoothsteer::python {
@@ -91,7 +91,7 @@ void bind_tuning(py::module_& m) {
       .def_readwrite("max_lateral_acceleration_mps2", &V::max_lateral_acceleration_mps2,
                      "friction limit mu g [m/s^2]; inf = none")
       .def("validate", &V::validate)
-      .def_static("from_file", &load_vehicle_limits, py::arg("yaml_path"),
+      .def_static("from_file", &io::load_vehicle_limits, py::arg("yaml_path"),
                   "Reads vehicles/*.yaml (ValueError naming the file and key).");
 
   py::enum_<Certificate>(m, "Certificate")
@@ -125,7 +125,7 @@ void bind_tuning(py::module_& m) {
            "ControllerParameters at |v| [m/s] (conservative interpolation)")
       .def("arrays", &schedule_arrays,
            "The schedule as a dict of numpy arrays (the columns of `smoothsteer tune`).")
-      .def_static("from_csv", &read_schedule_csv, py::arg("csv_path"),
+      .def_static("from_csv", &io::read_schedule_csv, py::arg("csv_path"),
                   py::arg("base") = ControllerParameters{}, "Reads a `smoothsteer tune` CSV.");
 
   m.def("_tune", &tune, py::arg("vehicle"), py::arg("speeds"), py::arg("path"), py::arg("options"));

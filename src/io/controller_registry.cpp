@@ -11,7 +11,7 @@
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
-#include "smoothsteer/tuning/schedule_files.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 
 namespace smoothsteer::io {

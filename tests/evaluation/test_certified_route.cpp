@@ -11,7 +11,7 @@
 
 #include "smoothsteer/evaluation/certified_route.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
-#include "smoothsteer/tuning/schedule_files.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -29,7 +29,7 @@ TEST(CertifiedRoute, ReproducesTheCommittedCircleSectionsSchedule) {
       certified_route_options(scenario, {{"feedforward_rate_share", 0.5}});
   const GainSchedule computed = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
                                                              certified_speed_grid(scenario));
-  const GainSchedule committed = read_schedule_csv(
+  const GainSchedule committed = io::read_schedule_csv(
       source_file("scenarios/schedules/passenger_car_circle_sections.csv"), options.base);
   ASSERT_EQ(computed.entries().size(), committed.entries().size())
       << "the speed grid differs from the committed command's 0.5:13:0.5";

@@ -1,6 +1,8 @@
-#include "smoothsteer/tuning/schedule_files.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 
 #include <yaml-cpp/yaml.h>
+
+#include "smoothsteer/io/atomic_output.hpp"
 
 #include <array>
 #include <cmath>
@@ -12,7 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace smoothsteer {
+namespace smoothsteer::io {
 namespace {
 
 // The last two columns (the feedforward route) are optional when reading: a file without them is
@@ -115,30 +117,18 @@ VehicleLimits load_vehicle_limits(const std::string& yaml_path) {
 }
 
 void write_schedule_csv(const GainSchedule& schedule, const std::string& csv_path) {
-  const std::string temporary = csv_path + ".tmp";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw std::runtime_error("cannot write " + temporary);
-    out.precision(12);
-    for (std::size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];
-    out << '\n';
-    for (const ScheduleEntry& e : schedule.entries()) {
-      out << e.speed_mps << ',' << static_cast<int>(e.region) << ',' << e.fictive_wheelbase_m << ','
-          << e.lead_wheelbase_m << ',' << e.lead_curvature_bound << ','
-          << 1.0 / e.lead_curvature_bound << ',' << e.k_rob << ',' << e.max_steering_angle_rad
-          << ',' << e.max_steering_rate_radps << ',' << e.max_steering_acceleration_radps2 << ','
-          << e.feedforward_curvature_bound << ',' << e.feedforward_curvature_rate << '\n';
-    }
-    if (!out.flush()) {
-      out.close();
-      std::remove(temporary.c_str());  // no half-written file is left behind
-      throw std::runtime_error("cannot write " + temporary);
-    }
+  std::ostringstream out;
+  out.precision(12);
+  for (std::size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];
+  out << '\n';
+  for (const ScheduleEntry& e : schedule.entries()) {
+    out << e.speed_mps << ',' << static_cast<int>(e.region) << ',' << e.fictive_wheelbase_m << ','
+        << e.lead_wheelbase_m << ',' << e.lead_curvature_bound << ','
+        << 1.0 / e.lead_curvature_bound << ',' << e.k_rob << ',' << e.max_steering_angle_rad << ','
+        << e.max_steering_rate_radps << ',' << e.max_steering_acceleration_radps2 << ','
+        << e.feedforward_curvature_bound << ',' << e.feedforward_curvature_rate << '\n';
   }
-  if (std::rename(temporary.c_str(), csv_path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot rename " + temporary + " to " + csv_path);
-  }
+  write_file_atomically(csv_path, out.str(), "--out");  // no half-written file is left behind
 }
 
 GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerParameters& base) {
@@ -236,4 +226,4 @@ GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerPara
   return schedule;
 }
 
-}  // namespace smoothsteer
+}  // namespace smoothsteer::io

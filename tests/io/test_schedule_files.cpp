@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "smoothsteer/tuning/schedule_files.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -27,7 +27,7 @@ std::string error_for(const std::string& row) {
   const fs::path file = fs::temp_directory_path() / "smoothsteer_schedule_test.csv";
   std::ofstream(file) << kHeader << kRow1 << row << kRow3;
   try {
-    read_schedule_csv(file.string(), ControllerParameters{});
+    io::read_schedule_csv(file.string(), ControllerParameters{});
   } catch (const std::invalid_argument& error) {
     return error.what();
   }

@@ -1,12 +1,13 @@
 #pragma once
 //! \file schedule_files.hpp
-//! Files of the tuner: the vehicle YAML it reads and the schedule CSV it writes (docs/tuning.md).
+//! Files of the tuner (io owns every file format): the vehicle YAML it reads and the schedule CSV
+//! it writes (docs/tuning.md).
 
 #include <string>
 
 #include "smoothsteer/tuning/gain_schedule.hpp"
 
-namespace smoothsteer {
+namespace smoothsteer::io {
 
 //! Reads wheelbase and steering limits from a vehicle YAML (vehicles/*.yaml). The wheelbase is
 //! `wheelbase_m`, or `cg_to_front_axle_m + cg_to_rear_axle_m`; the steering limits are
@@ -23,4 +24,4 @@ void write_schedule_csv(const GainSchedule& schedule, const std::string& csv_pat
 //! the other controller fields. Throws std::invalid_argument naming file, line and column.
 GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerParameters& base = {});
 
-}  // namespace smoothsteer
+}  // namespace smoothsteer::io
