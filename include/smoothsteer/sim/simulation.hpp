@@ -66,8 +66,8 @@ struct SimulationParameters {
   double substep_s = 0.001;
   PlantIntegrator integrator = default_plant_integrator();
   //! Absolute local error tolerance of rkf78 / dopri5 (per state component, m, rad, m/s). At
-  //! 1e-6 every metric of every shipped scenario stays within 0.06 mm and 1e-6 rad of converged
-  //! references (docs/benchmarks.md).
+  //! 1e-6 every metric of every shipped scenario stays within 0.035 mm and 1e-6 rad of
+  //! converged references (docs/benchmarks.md).
   double integrator_tolerance = 1e-6;
   double duration_s = 60.0;  //!< longest simulated time [s]
   //! Stop once the rear axle's closest point is this far beyond the end of an open path [m]
