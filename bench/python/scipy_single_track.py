@@ -3,13 +3,15 @@
 src/vehicle/vehicle_model.cpp (Pacejka lateral forces, kinematic blend at low speed), written in
 Python and integrated with scipy.integrate.odeint at the tolerance of the C++ adaptive
 integrator, restarted at every control period like it. The steering input is the actuator output
-delta_actual of a C++ run (linear between control instants), the longitudinal acceleration its
-`a` column; both start from the first row of that trace.
+of a C++ run: between control instants the cubic Hermite interpolant of its delta_actual and
+delta_actual_rate columns (C^1, like the actuator's output); the longitudinal acceleration is its
+`a` column; both start from the first row of that trace. The C++ run uses the default plant
+integrator (dopri5, docs/simulation.md) at the same tolerance.
 
 Usage (repository root, after a Release build):
-  /usr/bin/python3 bench/python/scipy_single_track.py [SCENARIO.yaml] [--tolerance 1e-8]
+  /usr/bin/python3 bench/python/scipy_single_track.py [SCENARIO.yaml] [--tolerance 1e-6]
 Prints model evaluations and time per control step of both, and how far apart the final poses
-are (the Python run sees delta(t) only at the control instants, so a few mm are expected).
+are (the Python run sees the steering only through its values and rates at the control instants).
 Needs python3-numpy and python3-scipy (Debian).
 """
 import argparse
@@ -68,7 +70,7 @@ def make_model(p):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("scenario", nargs="?", default="scenarios/lane_change_15.yaml")
-    parser.add_argument("--tolerance", type=float, default=1e-8)
+    parser.add_argument("--tolerance", type=float, default=1e-6)
     parser.add_argument("--cli", default="build/release/apps/smoothsteer")
     args = parser.parse_args()
     if not os.path.exists(args.cli):
@@ -77,7 +79,6 @@ def main():
         out = os.path.join(scratch, "run")
         started = time.perf_counter()
         subprocess.run([args.cli, "run", args.scenario, "--out", out, "--set",
-                        "simulation.integrator=rkf78", "--set",
                         f"simulation.integrator_tolerance={args.tolerance}"],
                        check=True, stdout=subprocess.DEVNULL)
         cli_seconds = time.perf_counter() - started
@@ -96,19 +97,24 @@ def main():
     for k in range(len(rows) - 1):
         t0, t1 = rows[k]["t"], rows[k + 1]["t"]
         d0, d1 = rows[k]["delta_actual"], rows[k + 1]["delta_actual"]
+        r0, r1 = rows[k]["delta_actual_rate"], rows[k + 1]["delta_actual_rate"]
 
-        def delta_of(t, t0=t0, t1=t1, d0=d0, d1=d1):
-            return d0 + (d1 - d0) * (t - t0) / (t1 - t0)
+        def delta_of(t, t0=t0, t1=t1, d0=d0, d1=d1, r0=r0, r1=r1):
+            h = t1 - t0
+            u = (t - t0) / h
+            return ((2 * u**3 - 3 * u**2 + 1) * d0 + (u**3 - 2 * u**2 + u) * h * r0
+                    + (-2 * u**3 + 3 * u**2) * d1 + (u**3 - u**2) * h * r1)
 
         y = odeint(derivative, y, [t0, t1], args=(delta_of, rows[k]["a"]),
-                   atol=args.tolerance, rtol=args.tolerance)[-1]
+                   atol=args.tolerance, rtol=0.0)[-1]  # absolute, like the C++ integrators
     python_seconds = time.perf_counter() - started
     steps = len(rows) - 1
     last = rows[-1]
     rear = (y[0] - lr * math.cos(y[2]), y[1] - lr * math.sin(y[2]))
     gap = math.hypot(rear[0] - last["x"], rear[1] - last["y"])
     print(f"scenario {summary['scenario']}: {steps} control steps, tolerance {args.tolerance:g}")
-    print(f"  C++ rkf78 (whole run incl. controller, file output): "
+    print(f"  C++ {summary['parameters']['simulation']['integrator']} "
+          f"(whole run incl. controller, file output): "
           f"{summary['model_evaluations'] / summary['metrics']['steps']:.1f} model evaluations/step, "
           f"{1e6 * cli_seconds / steps:.1f} us/step (process wall time)")
     print(f"  Python + scipy odeint (plant only): {counter[0] / steps:.1f} model evaluations/step, "

@@ -77,8 +77,10 @@ def test_the_simulation_runs_without_the_gil():
     time.sleep(0.05)
     before = counts[0]
     started = time.perf_counter()
-    # circle_sections, 60 s at a 0.1 ms plant step: several tenths of a second in C++
-    ss.run_scenario("scenarios/circle_sections.yaml", {"simulation.substep_s": 0.0001})
+    # circle_sections, 60 s with RK4 at a 0.1 ms plant step (the default adaptive integrator
+    # would take a few hundredths): several tenths of a second in C++
+    ss.run_scenario("scenarios/circle_sections.yaml",
+                    {"simulation.substep_s": 0.0001, "simulation.integrator": "fixed_rk4"})
     elapsed = time.perf_counter() - started
     during = counts[0] - before
     stop.set()

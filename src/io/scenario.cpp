@@ -2,6 +2,7 @@
 
 #include "smoothsteer/io/scenario.hpp"
 
+#include <array>
 #include <filesystem>
 
 #include "smoothsteer/io/controller_registry.hpp"
@@ -169,8 +170,10 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   p.control_period_s = sim.number("control_period_s", p.control_period_s, {0.0, 1.0, true, false});
   p.substep_s = sim.number("substep_s", p.substep_s, {0.0, 0.01, true, false});
   p.duration_s = sim.number("duration_s", p.duration_s, {0.0, 3600.0, true, false});
+  constexpr std::array<const char*, 3> integrator_names{"fixed_rk4", "rkf78", "dopri5"};
   const std::string integrator =
-      sim.text("integrator", "fixed_rk4", {"fixed_rk4", "rkf78", "dopri5"});
+      sim.text("integrator", integrator_names[static_cast<std::size_t>(p.integrator)],
+               {"fixed_rk4", "rkf78", "dopri5"});
   p.integrator = integrator == "fixed_rk4" ? PlantIntegrator::fixed_rk4
                  : integrator == "dopri5"  ? PlantIntegrator::dopri5
                                            : PlantIntegrator::rkf78;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "exact_actuator.hpp"
+
 #if SMOOTHSTEER_HAS_ODEINT
 #include "odeint.hpp"
 #endif
@@ -90,38 +92,6 @@ void fixed_substep(const PlantContext& c, double time, double delayed, VehicleSt
 
 // ---- adaptive: exact actuator + an embedded Runge-Kutta pair with error control ----
 
-//! The three equal lags x0' = p (u - x0), x1' = p (x0 - x1), x2' = p (x1 - x2) with constant u,
-//! solved exactly: with e_i = x_i(0) - u and q = p tau,
-//!   x0 = u + e0 E,  x1 = u + (e1 + e0 q) E,  x2 = u + (e2 + e1 q + e0 q^2 / 2) E,  E = e^{-q}.
-struct ExactLags {
-  double pole = 0.0;
-  double input = 0.0;
-  std::array<double, 3> deviation{};
-
-  SteeringActuator::State at(double tau) const noexcept {
-    const double q = pole * tau, e = std::exp(-q);
-    const auto& d = deviation;
-    return {input + d[0] * e, input + (d[1] + d[0] * q) * e,
-            input + (d[2] + d[1] * q + 0.5 * d[0] * q * q) * e};
-  }
-  double rate(double tau) const noexcept {
-    const SteeringActuator::State x = at(tau);
-    return pole * (x[1] - x[2]);
-  }
-};
-
-//! Whether the unsaturated solution stays inside the rate and angle limits over [0, h]
-//! (checked at 17 points with a 1 % margin; the solution is smooth over a control period).
-bool stays_linear(const ExactLags& lags, double h, const ActuatorParameters& p) noexcept {
-  constexpr int samples = 16;
-  for (int i = 0; i <= samples; ++i) {
-    const double tau = h * static_cast<double>(i) / samples;
-    if (std::abs(lags.rate(tau)) > 0.99 * p.max_rate_radps) return false;
-    if (std::abs(lags.at(tau)[2]) > 0.99 * p.max_angle_rad) return false;
-  }
-  return true;
-}
-
 using AdaptiveState = std::array<double, VehicleState::size + 1>;  // vehicle + distance
 
 //! Integrates vehicle and distance over [from, to] with delta(t) = delta_of(t - origin) and the
@@ -182,40 +152,39 @@ void solve_piece(const PlantContext& c, double origin, double from, double to,
   distance = y.back();
 }
 
-//! [t0, t0 + h], split where the speed profile's ramp starts or ends.
+//! Instants inside a period where the right-hand side is not smooth (offsets from its start).
+struct Kinks {
+  std::array<double, ExactActuatorPeriod::max_segments + 2> at{};
+  int count = 0;
+  void add(double offset) noexcept {
+    if (count < static_cast<int>(at.size())) at[static_cast<std::size_t>(count++)] = offset;
+  }
+};
+
+//! [t0, t0 + h], split where the speed profile's ramp starts or ends and at `kinks` (offsets):
+//! the error estimate of an embedded pair cannot be trusted across a kink of the right-hand
+//! side (Fehlberg 7(8)'s compares only its stages at the step's two ends).
 template <typename DeltaOf>
 void solve_adaptive(const PlantContext& c, double t0, double h, const DeltaOf& delta_of,
-                    VehicleState& state, double& distance) noexcept {
-  const double ramp_start = c.speed.start_time_s;
-  const double ramp_end = ramp_start + c.speed.ramp_duration_s();
-  // Kinks closer than a nanosecond to an end are the end (k * T rounds a little off).
+                    VehicleState& state, double& distance, Kinks kinks = {}) noexcept {
+  if (c.speed.ramp_duration_s() > 0.0) {
+    kinks.add(c.speed.start_time_s - t0);
+    kinks.add(c.speed.start_time_s + c.speed.ramp_duration_s() - t0);
+  }
+  std::sort(kinks.at.begin(), kinks.at.begin() + kinks.count);
+  // Kinks closer than a nanosecond to an end or to each other are one (k * T rounds off).
   constexpr double snap_s = 1e-9;
-  double from = t0;
-  for (double kink : {ramp_start, ramp_end}) {
-    if (c.speed.ramp_duration_s() > 0.0 && kink > from + snap_s && kink < t0 + h - snap_s) {
-      solve_piece(c, t0, from, kink, delta_of, state, distance);
+  double from = 0.0;
+  for (int i = 0; i < kinks.count; ++i) {
+    const double kink = kinks.at[static_cast<std::size_t>(i)];
+    if (kink > from + snap_s && kink < h - snap_s) {
+      solve_piece(c, t0, t0 + from, t0 + kink, delta_of, state, distance);
       from = kink;
     }
   }
-  solve_piece(c, t0, from, t0 + h, delta_of, state, distance);
+  solve_piece(c, t0, t0 + from, t0 + h, delta_of, state, distance);
   c.model.constrain(state, effective(c, delta_of(h)));
 }
-
-//! The actuator over one control period: up to `max_stretches` stretches of constant delayed
-//! input, each solved exactly from the state the previous one ends in.
-struct PeriodLags {
-  static constexpr int max_stretches = 8;
-  std::array<ExactLags, max_stretches> lags{};
-  std::array<double, max_stretches> start_s{};  //!< offset of each stretch in the period
-  int count = 0;
-
-  double angle(double tau) const noexcept {
-    int i = count - 1;
-    while (i > 0 && tau < start_s[static_cast<std::size_t>(i)]) --i;
-    const auto k = static_cast<std::size_t>(i);
-    return lags[k].at(tau - start_s[k])[2];
-  }
-};
 
 }  // namespace
 
@@ -251,40 +220,22 @@ double advance_plant(const PlantContext& c, double t, double command, VehicleSta
     actuator.set_state({last_input, last_input, last_input});
     return last_input;
   }
-  // The lags' output is continuous (C^2) across a jump of the input, so one adaptive solve
-  // covers the whole period; the exact solution gives delta(t) inside it.
-  PeriodLags period_lags;
-  SteeringActuator::State x = actuator.state();
-  const double pole = p.pole_radps();
-  for (int j = 0; j < c.substeps; ++j) {
-    const double u = inputs[j];
-    if (j > 0 && u == inputs[j - 1]) continue;
-    if (period_lags.count == PeriodLags::max_stretches) {
-      fixed();
-      return last_input;
-    }
-    const double start = j * c.substep_s;
-    if (period_lags.count > 0) {
-      const auto k = static_cast<std::size_t>(period_lags.count - 1);
-      x = period_lags.lags[k].at(start - period_lags.start_s[k]);
-    }
-    const auto k = static_cast<std::size_t>(period_lags.count++);
-    period_lags.lags[k] = ExactLags{pole, u, {x[0] - u, x[1] - u, x[2] - u}};
-    period_lags.start_s[k] = start;
+  // The actuator solved exactly, saturation included (exact_actuator.hpp). Its output is C^2
+  // across a jump of the input, so the adaptive solve runs across those, reading delta(t) from
+  // the exact solution; where a saturation begins or ends (delta' or delta'' jumps) it restarts.
+  ExactActuatorPeriod exact;
+  if (!exact.solve(p, actuator.state(), inputs, c.substeps, c.substep_s)) {
+    if (c.fallback_periods) ++*c.fallback_periods;
+    fixed();  // more segments than fit (not reached in practice): the reference method
+    return last_input;
   }
-  for (int i = 0; i < period_lags.count; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const double end = i + 1 < period_lags.count ? period_lags.start_s[k + 1] : period;
-    if (!stays_linear(period_lags.lags[k], end - period_lags.start_s[k], p)) {
-      fixed();  // the actuator saturates in this period: the reference method
-      return last_input;
-    }
+  Kinks kinks;
+  for (int i = 1; i < exact.segments(); ++i) {
+    if (exact.segment_mode(i) != exact.segment_mode(i - 1)) kinks.add(exact.segment_start(i));
   }
   solve_adaptive(
-      c, t, period, [&period_lags](double tau) { return period_lags.angle(tau); }, state,
-      distance_m);
-  const auto last = static_cast<std::size_t>(period_lags.count - 1);
-  actuator.set_state(period_lags.lags[last].at(period - period_lags.start_s[last]));
+      c, t, period, [&exact](double tau) { return exact.angle(tau); }, state, distance_m, kinks);
+  actuator.set_state(exact.state(period));
   return last_input;
 }
 

@@ -3,11 +3,11 @@
 // src/sim). Methods (PlantIntegrator):
 //   - fixed_rk4: classic RK4 of the vehicle at the sub-step, the actuator by RK4 at the same
 //     step (the method of earlier releases, kept as the reference);
-//   - rkf78 and dopri5: the three lags of the actuator solved exactly (a linear
-//     system with a piecewise constant input), the vehicle by the embedded Runge-Kutta pair
-//     Fehlberg 7(8) or Dormand-Prince 5(4) with error control (Boost.Odeint), restarted at
-//     every control instant. A period in which the exact solution would reach the actuator's
-//     rate or angle saturation is integrated by fixed_rk4 instead.
+//   - rkf78 and dopri5: the actuator solved exactly, rate and angle saturation included
+//     (exact_actuator.hpp: closed-form lags, the instants where a saturation begins or ends
+//     located on that solution), the vehicle by the embedded Runge-Kutta pair Fehlberg 7(8) or
+//     Dormand-Prince 5(4) with error control (Boost.Odeint), restarted at every control instant
+//     and at those instants and the speed ramp's kinks.
 // docs/simulation.md describes both; docs/benchmarks.md compares them.
 
 #include <array>
@@ -28,7 +28,8 @@ struct PlantContext {
   PlantIntegrator integrator = PlantIntegrator::fixed_rk4;
   double tolerance = 1e-8;
   std::uint64_t* model_evaluations = nullptr;
-  double* input_buffer = nullptr;  //!< room for `substeps` delayed inputs
+  std::uint64_t* fallback_periods = nullptr;  //!< periods left to fixed_rk4 by rkf78 / dopri5
+  double* input_buffer = nullptr;             //!< room for `substeps` delayed inputs
 };
 
 //! Advances the vehicle state, the actuator (its delay line included) and the travelled

@@ -54,6 +54,14 @@ double observe_rear_axle_side_slip(SideSlipObserver& observer, const VehicleMode
 
 }  // namespace
 
+PlantIntegrator default_plant_integrator() noexcept {
+#if SMOOTHSTEER_HAS_ODEINT
+  return PlantIntegrator::dopri5;
+#else
+  return PlantIntegrator::fixed_rk4;
+#endif
+}
+
 std::optional<Violation> SimulationParameters::first_violation() const noexcept {
   auto bad = [](const char* field, double value, const char* rule,
                 double reference = std::numeric_limits<double>::quiet_NaN()) {
@@ -188,6 +196,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                                    parameters.integrator,
                                    parameters.integrator_tolerance,
                                    &result.model_evaluations,
+                                   &result.plant_fallback_periods,
                                    input_buffer.data()};
 
   std::mt19937_64 engine(parameters.noise_seed);
