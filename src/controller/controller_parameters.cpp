@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace smoothsteer {
 namespace {
@@ -76,15 +77,14 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
       p.preview_time_s > ControllerParameters::max_actuator_delay_s) {
     return fail(text("preview_time_s"), p.preview_time_s, text("must be in [0, 1] s"));
   }
-  if (!std::isfinite(p.rear_slip_gradient_s2pm) || p.rear_slip_gradient_s2pm < 0.0 ||
-      p.rear_slip_gradient_s2pm > ControllerParameters::max_rear_slip_gradient_s2pm) {
-    return fail(text("rear_slip_gradient_s2pm"), p.rear_slip_gradient_s2pm,
-                text("must be in [0, 0.1] s^2/m"));
-  }
-  if (!std::isfinite(p.front_slip_gradient_s2pm) || p.front_slip_gradient_s2pm < 0.0 ||
-      p.front_slip_gradient_s2pm > ControllerParameters::max_rear_slip_gradient_s2pm) {
-    return fail(text("front_slip_gradient_s2pm"), p.front_slip_gradient_s2pm,
-                text("must be in [0, 0.1] s^2/m"));
+  const std::pair<const char*, double> slip_gradients[] = {
+      {"rear_slip_gradient_s2pm", p.rear_slip_gradient_s2pm},
+      {"front_slip_gradient_s2pm", p.front_slip_gradient_s2pm}};
+  for (const auto& [name, value] : slip_gradients) {
+    if (!std::isfinite(value) || value < 0.0 ||
+        value > ControllerParameters::max_slip_gradient_s2pm) {
+      return fail(text(name), value, text("must be in [0, 0.1] s^2/m"));
+    }
   }
   if (!std::isfinite(p.disturbance_estimation_length_m) ||
       (p.disturbance_estimation_length_m != 0.0 &&

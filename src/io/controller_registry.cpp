@@ -45,7 +45,7 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
   // slip_preview: the feedforward inverts the single-track model's lateral dynamics, with K_r
   // and K_f from the vehicle file.
   const bool slip_preview = c.boolean("slip_preview", defaults.rear_slip_gradient_s2pm > 0.0);
-  const double most = ControllerParameters::max_rear_slip_gradient_s2pm;
+  const double most = ControllerParameters::max_slip_gradient_s2pm;
   p.rear_slip_gradient_s2pm = slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0;
   p.front_slip_gradient_s2pm = slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0;
   p.slip_preview_second_order =

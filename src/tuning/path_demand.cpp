@@ -58,16 +58,13 @@ double lead_curvature_rate_demand(const Path& path, const double* wheelbases, in
         .evaluate(std::min(path.length(), static_cast<double>(std::clamp(k, 0L, samples)) * h))
         .curvature;
   };
-  double before = curvature(-1), at = curvature(0), after = curvature(1);
-  double previous =
-      invert_chain(curvature_jet(before, at, after), wheelbases, order).lead_curvature;
-  double demand = 0.0;
-  for (long k = 1; k <= samples; ++k) {
-    before = at, at = after, after = curvature(k + 1);
+  double before = curvature(-1), at = curvature(0), demand = 0.0, previous = 0.0;
+  for (long k = 0; k <= samples; ++k) {  // one path evaluation per sample
+    const double after = curvature(k + 1);
     const double lead =
         invert_chain(curvature_jet(before, at, after), wheelbases, order).lead_curvature;
-    demand = std::max(demand, std::abs(lead - previous) / h);
-    previous = lead;
+    if (k > 0) demand = std::max(demand, std::abs(lead - previous) / h);
+    previous = lead, before = at, at = after;
   }
   return demand;
 }

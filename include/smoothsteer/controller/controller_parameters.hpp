@@ -103,7 +103,7 @@ struct ControllerParameters {
   //! only its preview and gain (false). Near the friction limit the linear model over-corrects
   //! with it (docs/vehicle_dynamics.md, section 3).
   bool slip_preview_second_order = true;
-  static constexpr double max_rear_slip_gradient_s2pm = 0.1;
+  static constexpr double max_slip_gradient_s2pm = 0.1;  //!< bound of K_r and K_f
   //! Friction guard (docs/vehicle_dynamics.md): at speed v the lead wheel's curvature stays
   //! within the curvature whose stationary rear-axle curvature is a_max / v^2, so the car never
   //! asks more than a_max of its tires once the chain is stationary. kappa_ff moves into the
