@@ -80,6 +80,8 @@ void bind_controller(py::module_& m) {
       .def_readwrite("feedforward_share", &P::feedforward_share, "kbar_ff / kbar_n in [0, 1)")
       .def_readwrite("feedforward_curvature_rate", &P::feedforward_curvature_rate,
                      "L_ff [1/m^2]; inf = unlimited")
+      .def_readwrite("feedforward_catch_up", &P::feedforward_catch_up,
+                     "share of kbar_sw that makes up the feedforward's rate-limit lag, in [0, 1]")
       .def_readwrite("boundary_layer", &P::boundary_layer, "epsilon >= 0 [rad]")
       .def_readwrite("actuator_delay_s", &P::actuator_delay_s, "known actuator delay [s]")
       .def_readwrite("surface", &P::surface)

@@ -64,6 +64,9 @@ def test_parameter_errors_name_field_value_and_rule():
         ss.ControllerParameters(kbar=0.1)
     with pytest.raises(ValueError, match="wheelbases_m"):
         ss.ControllerParameters(wheelbases_m=[1.0] * 9)
+    with pytest.raises(ValueError) as catch_up:
+        ss.ControllerParameters(feedforward_catch_up=1.5).validate()
+    assert str(catch_up.value) == "ControllerParameters: feedforward_catch_up = 1.5 must be in [0, 1]"
 
 
 def test_path_errors():

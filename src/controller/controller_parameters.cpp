@@ -66,6 +66,10 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
     return fail(text("feedforward_curvature_rate"), p.feedforward_curvature_rate,
                 text("must be >= 0 (+inf: no rate limit)"));
   }
+  if (!std::isfinite(p.feedforward_catch_up) || p.feedforward_catch_up < 0.0 ||
+      p.feedforward_catch_up > 1.0) {
+    return fail(text("feedforward_catch_up"), p.feedforward_catch_up, text("must be in [0, 1]"));
+  }
   if (!std::isfinite(p.boundary_layer) || p.boundary_layer < 0.0) {
     return fail(text("boundary_layer"), p.boundary_layer, text("must be finite and >= 0"));
   }

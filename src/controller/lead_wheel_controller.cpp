@@ -341,6 +341,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   const double switching_bound = parameters_.switching_curvature_bound();
   const double feedforward_step =
       step_length > 0.0 ? parameters_.feedforward_curvature_rate * step_length : 0.0;
+  const double catch_up = parameters_.feedforward_catch_up * switching_bound;
   for (int step = 0; step < steps; ++step) {
     const LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0);
     if (step == 0) first = lead;
@@ -351,7 +352,15 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
         std::clamp(lead.feedforward_target, -feedforward_bound, feedforward_bound);
     feedforward_curvature_ +=
         std::clamp(wanted - feedforward_curvature_, -feedforward_step, feedforward_step);
-    double switching = lead.law.curvature + matched_disturbance_;
+    // Catch-up (ControllerParameters::feedforward_catch_up): up to g kbar_sw of what the rate
+    // limit still holds kappa_ff back from its target, faded out as the law saturates, so that
+    // |kappa_sw| <= kbar_sw and a saturated law keeps its full authority.
+    const double law = lead.law.curvature;
+    const double fade =
+        switching_bound > 0.0 ? 1.0 - std::min(1.0, std::abs(law) / switching_bound) : 0.0;
+    double switching = law +
+                       fade * std::clamp(wanted - feedforward_curvature_, -catch_up, catch_up) +
+                       matched_disturbance_;
     if (guard < parameters_.lead_curvature_bound) {
       // |kappa_ff + kappa_sw| <= guard where kappa_sw can reach it; while kappa_ff still ramps
       // down into the guard, kappa_sw pulls with its full authority.

@@ -1,10 +1,13 @@
 #pragma once
 // The comparison set-up of a scenario (internal): its path and wheelbase, its speed as the
 // nominal speed, and the limits the simulated actuator enforces, so that every controller of
-// a comparison runs under the same C1 and C2. The MPC's steering model gets the actuator's lag:
-// its dead time plus the low-pass's group delay 3 / (2 pi f_b), the value the shipped scenarios
-// give the lead-wheel controller as actuator_delay_s (Autoware sets vehicle_model_steer_tau per
-// vehicle; its default 0.3 s is for another steering system).
+// a comparison runs under the same C1 and C2. The MPC's steering model gets a first-order lag of
+// the dead time plus 3 / (2 pi f_b) (48 ms at 10 Hz). That is twice the three-pole low-pass's
+// own group delay 3 / w_p (24 ms, w_p = ActuatorParameters::pole_radps) and equals the Smith
+// delay the shipped scenarios give the lead-wheel controller (actuator_delay_s 0.048 s: the
+// group delay plus the lag the feedforward leaves), so both model-based controllers get the same
+// lag. The actuator's own 24 ms makes the tuned MPC worse (docs/baselines.md). Autoware sets
+// vehicle_model_steer_tau per vehicle; its default 0.3 s is for another steering system.
 
 #include <numbers>
 

@@ -36,6 +36,8 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
     p.feedforward_curvature_rate = defaults.feedforward_curvature_rate;
     c.store("feedforward_curvature_rate", YAML::Node(YAML::NodeType::Null));
   }
+  p.feedforward_catch_up =
+      c.number("feedforward_catch_up", defaults.feedforward_catch_up, {0.0, 1.0});
   p.actuator_delay_s = c.number("actuator_delay_s", defaults.actuator_delay_s,
                                 {0.0, ControllerParameters::max_actuator_delay_s});
   p.disturbance_estimation_length_m = c.number(

@@ -28,6 +28,7 @@ ControllerParameters random_feedforward_parameters(Random& random, int order) {
   p.feedforward_share = random.uniform(0.0, 0.9);
   p.feedforward_curvature_rate = random.uniform(0.001, 0.05);
   p.boundary_layer = random.coin() ? 0.0 : random.uniform(0.005, 0.05);
+  p.feedforward_catch_up = random.coin() ? 0.0 : random.uniform(0.0, 1.0);
   const CorneringTarget targets[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
                                      CorneringTarget::lead_wheel};
   p.cornering_target = targets[random.integer(0, 2)];
@@ -37,9 +38,10 @@ ControllerParameters random_feedforward_parameters(Random& random, int order) {
 std::string describe_case(const ControllerParameters& p, const char* path, const Pose2& start) {
   std::ostringstream text;
   text << describe(p) << " share=" << p.feedforward_share
-       << " L_ff=" << p.feedforward_curvature_rate << " eps=" << p.boundary_layer
-       << " target=" << static_cast<int>(p.cornering_target) << " path=" << path << " start=("
-       << start.position.x << "," << start.position.y << "," << start.heading_rad << ")";
+       << " L_ff=" << p.feedforward_curvature_rate << " catch_up=" << p.feedforward_catch_up
+       << " eps=" << p.boundary_layer << " target=" << static_cast<int>(p.cornering_target)
+       << " path=" << path << " start=(" << start.position.x << "," << start.position.y << ","
+       << start.heading_rad << ")";
   return text.str();
 }
 

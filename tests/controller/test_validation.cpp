@@ -75,6 +75,12 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
   p.actuator_delay_s = 2.0;
   expect_rejected(p, "actuator_delay_s = 2", "[0, 1] s");
   p = {};
+  p.feedforward_catch_up = 1.5;
+  expect_rejected(p, "feedforward_catch_up = 1.5", "[0, 1]");
+  p = {};
+  p.feedforward_catch_up = std::numeric_limits<double>::quiet_NaN();
+  expect_rejected(p, "feedforward_catch_up = nan", "[0, 1]");
+  p = {};
   p.boundary_layer = -0.01;
   expect_rejected(p, "boundary_layer = -0.01", ">= 0");
   p = {};

@@ -90,6 +90,8 @@ TEST_F(ScenarioErrors, OutOfRangeValues) {
   expect_contains(error_of(file, {"speed.initial_mps=-2"}),
                   {"'speed.initial_mps'", "-2", "out of range"});
   expect_contains(error_of(file, {"vehicle.mass_kg=0"}), {"'vehicle.mass_kg'", "out of range"});
+  expect_contains(error_of(file, {"controller.feedforward_catch_up=2"}),
+                  {file, "'controller.feedforward_catch_up'", "2", "[0, 1]"});
   expect_contains(error_of(file, {"controller.order=9"}), {"'controller.order'", "[0, 8]"});
   expect_contains(error_of(file, {"simulation.control_period_s=0.0125"}),
                   {"'simulation'", "control_period_s", "whole multiple"});

@@ -68,6 +68,11 @@ struct ControllerParameters {
   //! make the steering rate and acceleration certificate of steering_certificate.hpp finite;
   //! +inf lets the feedforward follow its target at once (then only the box bound holds).
   double feedforward_curvature_rate = std::numeric_limits<double>::infinity();
+  //! Catch-up g in [0, 1] (docs/feedforward.md, section 4): where the rate limit L_ff holds
+  //! kappa_ff back from its target, the switching part adds up to g kbar_sw of the gap, inside
+  //! its own bound kbar_sw. kappa_sw stays in +-kbar_sw, so the certificate is unchanged, and the
+  //! residual that k_rob must cover never grows. 0 = off (kappa_ff alone follows its target).
+  double feedforward_catch_up = 0.0;
   //! epsilon >= 0: width of a boundary layer around the switching surface, in the units of the
   //! sliding variable (rad for the global law, m for the paper's). 0 is the paper's
   //! kappa_sw = kbar_sw sign(.); epsilon > 0 uses kbar_sw sat(./epsilon), which removes the
