@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """How well can the certified controller class take a curvature jump? (docs/feedforward.md,
-section "What the certificate admits at a curvature jump").
+section 6, "At a curvature jump the centred ramp, not the certificate, sets the error").
 
 The certificate (include/smoothsteer/controller/steering_certificate.hpp) holds for any lead
 curvature kappa_n = f + w with |f| <= kbar_ff, |df/ds| <= L_ff and |w| <= kbar_sw. This script
@@ -19,14 +19,15 @@ kinematic model, not for the car. Three figures per jump:
 * feedforward alone (w = 0): the best planned f;
 * certified class: the best planned f + w.
 
-    /usr/bin/python3 scripts/feedforward_bound.py
+    PYTHONPATH=build/ci/python /usr/bin/python3 scripts/feedforward_bound.py
         [--schedule scenarios/schedules/passenger_car_circle_sections.csv]
         [--jump SPEED:K1:K2 ...]
 
 Without --jump it takes circle_sections' five jumps at the speeds where the scenario meets them.
+The limits at a speed are the controller's own (GainSchedule.parameters_at of the smoothsteer
+module, the schedule's conservative interpolation), so the module must be built.
 """
 import argparse
-import csv
 import math
 import os
 
@@ -42,16 +43,14 @@ CIRCLE_JUMPS = [(4.15, 0.0, 1 / 30), (8.0, 1 / 30, -1 / 40), (12.5, -1 / 40, 1 /
                 (12.5, 1 / 50, -1 / 30), (12.5, -1 / 30, 0.0)]
 
 
-def schedule_row(path, speed):
-    """The schedule's entry at `speed`, linearly interpolated between its rows."""
-    with open(path) as f:
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
-    rows.sort(key=lambda r: r["speed_mps"])
-    for lower, upper in zip(rows, rows[1:]):
-        if lower["speed_mps"] <= speed <= upper["speed_mps"]:
-            t = (speed - lower["speed_mps"]) / (upper["speed_mps"] - lower["speed_mps"])
-            return {k: lower[k] + t * (upper[k] - lower[k]) for k in lower}
-    return rows[0] if speed < rows[0]["speed_mps"] else rows[-1]
+def schedule_limits(path, speed):
+    """(lambda_1 .. lambda_n, kbar_ff, L_ff, kbar_sw) the scheduled controller runs at `speed`."""
+    import smoothsteer  # the built module: the controller's own interpolation of the schedule
+
+    p = smoothsteer.GainSchedule.from_csv(path).parameters_at(speed)
+    feedforward_bound = p.feedforward_share * p.lead_curvature_bound
+    return (list(p.wheelbases_m)[:p.order], feedforward_bound, p.feedforward_curvature_rate,
+            p.lead_curvature_bound - feedforward_bound)
 
 
 def chain_model(k1, k2, wheelbases, before, after, step):
@@ -178,20 +177,16 @@ def main():
                         help="SPEED:K1:K2 (m/s, 1/m, 1/m); repeatable")
     args = parser.parse_args()
     jumps = [tuple(float(x) for x in j.split(":")) for j in args.jump] or CIRCLE_JUMPS
-    print("| speed | jump | L_ff | kbar_ff | kbar_sw | lambda_1, lambda_2 | centred ramp | "
+    print("| speed | jump | L_ff | kbar_ff | kbar_sw | lambda_i | centred ramp | "
           "feedforward alone | certified class |")
     print("|---|---|---|---|---|---|---|---|---|")
     for speed, k1, k2 in jumps:
-        row = schedule_row(args.schedule, speed)
-        fictive, lead = row["fictive_wheelbase_m"], row["lead_wheelbase_m"]
-        wheelbases = [fictive, lead] if lead > 0.0 else [fictive]
-        ff_bound = row["feedforward_curvature_bound_per_m"]
-        ff_rate = row["feedforward_curvature_rate_per_m2"]
-        sw_bound = row["lead_curvature_bound_per_m"] - ff_bound
+        wheelbases, ff_bound, ff_rate, sw_bound = schedule_limits(args.schedule, speed)
         alone, _ = lower_bound(k1, k2, wheelbases, ff_bound, ff_rate, 0.0)
         both, _ = lower_bound(k1, k2, wheelbases, ff_bound, ff_rate, sw_bound)
         print(f"| {speed:g} m/s | {k1:+.4f} -> {k2:+.4f} 1/m | {ff_rate:.4f} 1/m^2 | "
-              f"{ff_bound:.4f} 1/m | {sw_bound:.4f} 1/m | {fictive:.2f}, {lead:.2f} m | "
+              f"{ff_bound:.4f} 1/m | {sw_bound:.4f} 1/m | "
+              f"{', '.join(f'{lam:.2f}' for lam in wheelbases)} m | "
               f"{centred_ramp_offset(k1, k2, wheelbases, ff_rate):.3f} m | {alone:.3f} m | {both:.3f} m |")
 
 
