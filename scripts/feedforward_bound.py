@@ -170,18 +170,33 @@ def lower_bound(k1, k2, wheelbases, ff_bound, ff_rate, sw_bound, before=25.0, af
     return result.x[-1], result.x
 
 
+def jump_argument(text):
+    """SPEED:K1:K2 with a finite speed > 0 and finite curvatures, else an argparse error."""
+    try:
+        speed, k1, k2 = (float(x) for x in text.split(":"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' must be SPEED:K1:K2 (three numbers)")
+    if not (math.isfinite(speed) and speed > 0 and math.isfinite(k1) and math.isfinite(k2)):
+        raise argparse.ArgumentTypeError(f"'{text}': speed must be finite and > 0, "
+                                         "curvatures finite")
+    return speed, k1, k2
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--schedule", default=DEFAULT_SCHEDULE)
-    parser.add_argument("--jump", action="append", default=[],
+    parser.add_argument("--jump", action="append", default=[], type=jump_argument,
                         help="SPEED:K1:K2 (m/s, 1/m, 1/m); repeatable")
     args = parser.parse_args()
-    jumps = [tuple(float(x) for x in j.split(":")) for j in args.jump] or CIRCLE_JUMPS
+    jumps = args.jump or CIRCLE_JUMPS
     print("| speed | jump | L_ff | kbar_ff | kbar_sw | lambda_i | centred ramp | "
           "feedforward alone | certified class |")
     print("|---|---|---|---|---|---|---|---|---|")
     for speed, k1, k2 in jumps:
-        wheelbases, ff_bound, ff_rate, sw_bound = schedule_limits(args.schedule, speed)
+        try:
+            wheelbases, ff_bound, ff_rate, sw_bound = schedule_limits(args.schedule, speed)
+        except ValueError as error:  # the schedule reader names the file, line and rule
+            parser.error(str(error))
         alone, _ = lower_bound(k1, k2, wheelbases, ff_bound, ff_rate, 0.0)
         both, _ = lower_bound(k1, k2, wheelbases, ff_bound, ff_rate, sw_bound)
         print(f"| {speed:g} m/s | {k1:+.4f} -> {k2:+.4f} 1/m | {ff_rate:.4f} 1/m^2 | "
