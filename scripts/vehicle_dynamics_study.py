@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Vehicle-dynamics compensation study (docs/vehicle_dynamics.md, docs/results.md).
 
-Runs the shipped kinetic scenarios with the compensations on (as shipped), off, with the true
-slip instead of the observer, with the observer's cornering stiffness and mass off by +-20 %, and
+Runs the shipped kinetic scenarios with the compensations on (as shipped), off, with the linear
+observer or the true slip instead of the shipped Magic Formula observer, with the observer's cornering stiffness and mass off by +-20 %, and
 with actuator inversion, and prints a Markdown table of the rear axle's max |e| (whole run; after
 8 s for circle_sections), the held command's largest rate and acceleration, the samples above the
 car's limits, the largest side slip and the slip estimate's largest error.
@@ -25,7 +25,8 @@ OFF = ["controller.slip_preview=false", "controller.preview_time_s=0", "controll
 ACTUATOR_T = math.sqrt(2 ** (1 / 3) - 1) / (2 * math.pi * 10.0)
 VARIANTS = [
     ("compensation off", OFF),
-    ("shipped: observer + single-track inversion (scenario preview_time_s)", []),
+    ("shipped: observer (Magic Formula) + single-track inversion (scenario preview_time_s)", []),
+    ("linear single-track observer instead", ["simulation.side_slip.tire_model=linear"]),
     ("true slip instead of the observer", ["simulation.side_slip.source=truth"]),
     ("observer stiffness x 0.8", ["simulation.side_slip.cornering_stiffness_scale=0.8"]),
     ("observer stiffness x 1.2", ["simulation.side_slip.cornering_stiffness_scale=1.2"]),

@@ -194,6 +194,9 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
                                           : SideSlipSource::observer;
   estimation.cornering_stiffness_scale = slip.number("cornering_stiffness_scale", 1.0, {0.2, 5.0});
   estimation.mass_scale = slip.number("mass_scale", 1.0, {0.2, 5.0});
+  estimation.tire_model = slip.text("tire_model", "linear", {"linear", "magic_formula"}) == "linear"
+                              ? ObserverTireModel::linear
+                              : ObserverTireModel::magic_formula;
   estimation.yaw_rate_noise_std_radps = slip.number("yaw_rate_noise_std_radps", 0.0, {0.0, 1.0});
   estimation.lateral_acceleration_noise_std_mps2 =
       slip.number("lateral_acceleration_noise_std_mps2", 0.0, {0.0, 10.0});

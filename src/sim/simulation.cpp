@@ -119,6 +119,10 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
   if (source < 0 || source > static_cast<int>(SideSlipSource::observer)) {
     return bad("side_slip.source", source, "must be 0 (none), 1 (truth) or 2 (observer)");
   }
+  const int tire_model = static_cast<int>(side_slip.tire_model);
+  if (tire_model < 0 || tire_model > static_cast<int>(ObserverTireModel::magic_formula)) {
+    return bad("side_slip.tire_model", tire_model, "must be 0 (linear) or 1 (magic_formula)");
+  }
   if (!(side_slip.cornering_stiffness_scale >= 0.2 && side_slip.cornering_stiffness_scale <= 5.0)) {
     return bad("side_slip.cornering_stiffness_scale", side_slip.cornering_stiffness_scale,
                "must be in [0.2, 5]");
@@ -203,7 +207,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   std::normal_distribution<double> unit_normal(0.0, 1.0);
   const SideSlipEstimation& slip = parameters.side_slip;
   SideSlipObserverParameters observer_parameters = SideSlipObserverParameters::from_vehicle(
-      car, slip.cornering_stiffness_scale, slip.mass_scale);
+      car, slip.cornering_stiffness_scale, slip.mass_scale, slip.tire_model);
   // The observer trusts its sensors as much as their simulated noise says (at least its
   // defaults: a noise-free sensor would make the filter over-confident in the model's error).
   observer_parameters.yaw_rate_noise_std_radps =

@@ -1,6 +1,9 @@
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "smoothsteer/vehicle/vehicle_model.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -50,10 +53,73 @@ void correct(double x[2], Matrix2& p, const double h[2], double innovation, doub
   p[1][1] = p11;
 }
 
+//! The single-track model's lateral dynamics at x = (vy, r): d x / dt, its Jacobian A, and the
+//! accelerometer a_y = d vy / dt + v r.
+struct LateralModel {
+  double rate[2];
+  Matrix2 jacobian;
+  double lateral_acceleration;
+};
+
+//! One axle's force: linear (the slope at zero) or the Magic Formula of the same slope.
+struct AxleForce {
+  double force, slope;  //!< Fy [N], dFy / dalpha [N/rad]
+};
+
+AxleForce axle_force(const SideSlipObserverParameters& p, const TireParameters& shape,
+                     double cornering_stiffness, double load, double slip_angle) noexcept {
+  if (p.tire_model == ObserverTireModel::linear) {
+    return {cornering_stiffness * slip_angle, cornering_stiffness};
+  }
+  TireParameters tire = shape;
+  tire.stiffness_factor_b = cornering_stiffness / (shape.shape_factor_c * shape.friction_mu * load);
+  return {DynamicSingleTrack::lateral_force(tire, slip_angle, load),
+          DynamicSingleTrack::lateral_force_slope(tire, slip_angle, load)};
+}
+
+//! Rajamani eqs. 2.31 and 2.45 per axle: m (d vy / dt + v r) = Fyr + Fyf cos(delta),
+//! Iz d r / dt = lf Fyf cos(delta) - lr Fyr. The linear model takes the slip angles to first
+//! order and cos(delta) = 1 (the header's matrices); magic_formula keeps them as the plant does.
+LateralModel lateral_model(const SideSlipObserverParameters& p, double v, double delta,
+                           const double x[2]) noexcept {
+  const double lf = p.cg_to_front_axle_m, lr = p.cg_to_rear_axle_m;
+  const bool linear = p.tire_model == ObserverTireModel::linear;
+  const double front_lateral = x[0] + lf * x[1], rear_lateral = x[0] - lr * x[1];
+  // Slip angles and their derivatives along vy (d alpha / d r = lf, -lr times these).
+  const double front_alpha =
+      linear ? delta - front_lateral / v : delta - std::atan(front_lateral / v);
+  const double rear_alpha = linear ? -rear_lateral / v : -std::atan(rear_lateral / v);
+  const double front_gain = linear ? -1.0 / v : -v / (v * v + front_lateral * front_lateral);
+  const double rear_gain = linear ? -1.0 / v : -v / (v * v + rear_lateral * rear_lateral);
+  const double wheelbase = lf + lr;
+  const double front_load = p.mass_kg * p.gravity_mps2 * lr / wheelbase;
+  const double rear_load = p.mass_kg * p.gravity_mps2 * lf / wheelbase;
+  const AxleForce front =
+      axle_force(p, p.front_tire, p.front_cornering_stiffness_npr, front_load, front_alpha);
+  const AxleForce rear =
+      axle_force(p, p.rear_tire, p.rear_cornering_stiffness_npr, rear_load, rear_alpha);
+  const double cos_delta = linear ? 1.0 : std::cos(delta);
+  const double front_y = front.force * cos_delta, front_slope = front.slope * cos_delta;
+  LateralModel model{};
+  model.lateral_acceleration = (rear.force + front_y) / p.mass_kg;
+  model.rate[0] = model.lateral_acceleration - v * x[1];
+  model.rate[1] = (lf * front_y - lr * rear.force) / p.yaw_inertia_kgm2;
+  const double front_vy = front_slope * front_gain, rear_vy = rear.slope * rear_gain;
+  model.jacobian[0][0] = (front_vy + rear_vy) / p.mass_kg;
+  model.jacobian[0][1] = (lf * front_vy - lr * rear_vy) / p.mass_kg - v;
+  model.jacobian[1][0] = (lf * front_vy - lr * rear_vy) / p.yaw_inertia_kgm2;
+  model.jacobian[1][1] = (lf * lf * front_vy + lr * lr * rear_vy) / p.yaw_inertia_kgm2;
+  return model;
+}
+
+//! Sub-steps of the Magic Formula's RK4 prediction: at most half the fastest time constant each.
+constexpr int kMaxPredictionSubsteps = 16;
+
 }  // namespace
 
 SideSlipObserverParameters SideSlipObserverParameters::from_vehicle(
-    const VehicleParameters& vehicle, double cornering_stiffness_scale, double mass_scale) {
+    const VehicleParameters& vehicle, double cornering_stiffness_scale, double mass_scale,
+    ObserverTireModel tire_model) {
   SideSlipObserverParameters p;
   p.mass_kg = vehicle.mass_kg * mass_scale;
   p.yaw_inertia_kgm2 = vehicle.yaw_inertia_kgm2 * mass_scale;
@@ -63,6 +129,10 @@ SideSlipObserverParameters SideSlipObserverParameters::from_vehicle(
       cornering_stiffness_scale * vehicle.front_cornering_stiffness_npr();
   p.rear_cornering_stiffness_npr =
       cornering_stiffness_scale * vehicle.rear_cornering_stiffness_npr();
+  p.tire_model = tire_model;
+  p.front_tire = vehicle.front_tire;
+  p.rear_tire = vehicle.rear_tire;
+  p.gravity_mps2 = vehicle.gravity_mps2;
   return p;
 }
 
@@ -89,6 +159,13 @@ std::optional<Violation> SideSlipObserverParameters::first_violation() const noe
   }
   check.require(std::isfinite(min_speed_mps) && min_speed_mps >= 0.5 && min_speed_mps <= 50.0,
                 "min_speed_mps", min_speed_mps, "must be in [0.5, 50] m/s");
+  check.require(positive_finite(gravity_mps2) && gravity_mps2 <= 100.0, "gravity_mps2",
+                gravity_mps2, "must be finite, > 0 and <= 100");
+  check.require(
+      tire_model == ObserverTireModel::linear || tire_model == ObserverTireModel::magic_formula,
+      "tire_model", static_cast<double>(tire_model), "must be 0 (linear) or 1 (magic_formula)");
+  check.include(tire_violation(owner, "front_tire.", front_tire));
+  check.include(tire_violation(owner, "rear_tire.", rear_tire));
   return check.first();
 }
 
@@ -135,39 +212,60 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
     side_slip_ = v > 0.0 ? std::atan(lateral_velocity_ / v) : 0.0;
     return Status::ok;
   }
-  const double cf = p.front_cornering_stiffness_npr, cr = p.rear_cornering_stiffness_npr;
   const double lf = p.cg_to_front_axle_m, lr = p.cg_to_rear_axle_m;
-  const double m_v = p.mass_kg * v, i_v = p.yaw_inertia_kgm2 * v;
-  // Linear single-track model (header): d x / dt = A x + b delta.
-  const Matrix2 a{{-(cf + cr) / m_v, -v - (cf * lf - cr * lr) / m_v},
-                  {-(cf * lf - cr * lr) / i_v, -(cf * lf * lf + cr * lr * lr) / i_v}};
-  const double b[2] = {cf / p.mass_kg, cf * lf / p.yaw_inertia_kgm2};
-
-  // Prediction with the steering angle held since the last measurement: x+ = Phi x + Gamma
-  // delta, Gamma = A^-1 (Phi - I) b.
   const double held_steering = has_previous_ ? previous_steering_ : m.steering_angle_rad;
   previous_steering_ = m.steering_angle_rad;
   has_previous_ = true;
-  Matrix2 phi;
+  double x[2] = {lateral_velocity_, yaw_rate_};
+  const LateralModel start = lateral_model(p, v, held_steering, x);
+  const Matrix2& a = start.jacobian;
+  Matrix2 phi;  // the covariance's transition, e^{A period} at the prior estimate
   matrix_exponential(a, period_s, phi);
-  const double det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
-  double gamma[2];
-  if (std::abs(det) * period_s * period_s > 1e-9) {
-    const double r0 = (phi[0][0] - 1.0) * b[0] + phi[0][1] * b[1];
-    const double r1 = phi[1][0] * b[0] + (phi[1][1] - 1.0) * b[1];
-    gamma[0] = (a[1][1] * r0 - a[0][1] * r1) / det;
-    gamma[1] = (-a[1][0] * r0 + a[0][0] * r1) / det;
-  } else {  // A (nearly) singular: Simpson's rule for the integral of e^{A t} b
-    Matrix2 half;
-    matrix_exponential(a, 0.5 * period_s, half);
-    for (int i = 0; i < 2; ++i) {
-      gamma[i] = period_s / 6.0 *
-                 ((1.0 + 4.0 * half[i][i] + phi[i][i]) * b[i] +
-                  (4.0 * half[i][1 - i] + phi[i][1 - i]) * b[1 - i]);
+  if (p.tire_model == ObserverTireModel::linear) {
+    // Exact for the linear model: x+ = Phi x + Gamma delta, Gamma = A^-1 (Phi - I) b.
+    const double b[2] = {p.front_cornering_stiffness_npr / p.mass_kg,
+                         p.front_cornering_stiffness_npr * lf / p.yaw_inertia_kgm2};
+    const double det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+    double gamma[2];
+    if (std::abs(det) * period_s * period_s > 1e-9) {
+      const double r0 = (phi[0][0] - 1.0) * b[0] + phi[0][1] * b[1];
+      const double r1 = phi[1][0] * b[0] + (phi[1][1] - 1.0) * b[1];
+      gamma[0] = (a[1][1] * r0 - a[0][1] * r1) / det;
+      gamma[1] = (-a[1][0] * r0 + a[0][0] * r1) / det;
+    } else {  // A (nearly) singular: Simpson's rule for the integral of e^{A t} b
+      Matrix2 half;
+      matrix_exponential(a, 0.5 * period_s, half);
+      for (int i = 0; i < 2; ++i) {
+        gamma[i] = period_s / 6.0 *
+                   ((1.0 + 4.0 * half[i][i] + phi[i][i]) * b[i] +
+                    (4.0 * half[i][1 - i] + phi[i][1 - i]) * b[1 - i]);
+      }
+    }
+    const double vy = x[0], r = x[1];
+    x[0] = phi[0][0] * vy + phi[0][1] * r + gamma[0] * held_steering;
+    x[1] = phi[1][0] * vy + phi[1][1] * r + gamma[1] * held_steering;
+  } else {
+    // RK4 in sub-steps of at most half the fastest time constant at the prior estimate.
+    const double fastest = std::abs(a[0][0]) + std::abs(a[1][1]);
+    const int substeps = std::clamp(static_cast<int>(std::ceil(2.0 * fastest * period_s)), 1,
+                                    kMaxPredictionSubsteps);
+    const double h = period_s / substeps;
+    for (int step = 0; step < substeps; ++step) {
+      double k[4][2], probe[2];
+      const double weights[4] = {0.0, 0.5, 0.5, 1.0};
+      for (int stage = 0; stage < 4; ++stage) {
+        for (int i = 0; i < 2; ++i) {
+          probe[i] = x[i] + (stage == 0 ? 0.0 : weights[stage] * h * k[stage - 1][i]);
+        }
+        const LateralModel model = lateral_model(p, v, held_steering, probe);
+        k[stage][0] = model.rate[0];
+        k[stage][1] = model.rate[1];
+      }
+      for (int i = 0; i < 2; ++i) {
+        x[i] += h / 6.0 * (k[0][i] + 2.0 * k[1][i] + 2.0 * k[2][i] + k[3][i]);
+      }
     }
   }
-  double x[2] = {phi[0][0] * lateral_velocity_ + phi[0][1] * yaw_rate_ + gamma[0] * held_steering,
-                 phi[1][0] * lateral_velocity_ + phi[1][1] * yaw_rate_ + gamma[1] * held_steering};
   Matrix2 predicted{};
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
@@ -181,14 +279,13 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
   predicted[0][0] += p.lateral_process_std_mps2 * p.lateral_process_std_mps2 * period_s;
   predicted[1][1] += p.yaw_process_std_radps2 * p.yaw_process_std_radps2 * period_s;
 
-  // Corrections: the gyro (r), then the accelerometer (a_y = h x + Cf / m delta).
+  // Corrections: the gyro (r), then the accelerometer (a_y, linearised at the prediction).
   const double h_yaw[2] = {0.0, 1.0};
   correct(x, predicted, h_yaw, m.yaw_rate_radps - x[1],
           p.yaw_rate_noise_std_radps * p.yaw_rate_noise_std_radps);
-  const double h_lateral[2] = {a[0][0], a[0][1] + v};
-  const double predicted_lateral =
-      h_lateral[0] * x[0] + h_lateral[1] * x[1] + b[0] * m.steering_angle_rad;
-  correct(x, predicted, h_lateral, m.lateral_acceleration_mps2 - predicted_lateral,
+  const LateralModel at_prediction = lateral_model(p, v, m.steering_angle_rad, x);
+  const double h_lateral[2] = {at_prediction.jacobian[0][0], at_prediction.jacobian[0][1] + v};
+  correct(x, predicted, h_lateral, m.lateral_acceleration_mps2 - at_prediction.lateral_acceleration,
           p.lateral_acceleration_noise_std_mps2 * p.lateral_acceleration_noise_std_mps2);
 
   if (!std::isfinite(x[0]) || !std::isfinite(x[1])) {

@@ -85,6 +85,17 @@ double DynamicSingleTrack::lateral_force(const TireParameters& tire, double slip
   return tire.friction_mu * vertical_load_n * std::sin(tire.shape_factor_c * std::atan(inner));
 }
 
+double DynamicSingleTrack::lateral_force_slope(const TireParameters& tire, double slip_angle_rad,
+                                               double vertical_load_n) noexcept {
+  const double b = tire.stiffness_factor_b, e = tire.curvature_factor_e;
+  const double b_alpha = b * slip_angle_rad;
+  const double inner = b_alpha - e * (b_alpha - std::atan(b_alpha));
+  const double d_inner = b - e * (b - b / (1.0 + b_alpha * b_alpha));
+  const double c = tire.shape_factor_c;
+  return tire.friction_mu * vertical_load_n * std::cos(c * std::atan(inner)) * c /
+         (1.0 + inner * inner) * d_inner;
+}
+
 DynamicSingleTrack::SlipAngles DynamicSingleTrack::slip_angles(const VehicleState& s,
                                                                double delta) const noexcept {
   const double vx = std::max(s.vx_mps, parameters_.kinematic_below_mps);

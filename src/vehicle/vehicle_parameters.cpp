@@ -14,9 +14,12 @@ bool positive(double value) {
   return std::isfinite(value) && value > 0.0;
 }
 
-std::optional<Violation> tire_violation(const char* prefix, const TireParameters& tire) noexcept {
-  auto bad = [prefix](const char* field, double value, const char* rule) {
-    return Violation{owner, prefix, field, value, rule};
+}  // namespace
+
+std::optional<Violation> tire_violation(const char* owner_name, const char* prefix,
+                                        const TireParameters& tire) noexcept {
+  auto bad = [owner_name, prefix](const char* field, double value, const char* rule) {
+    return Violation{owner_name, prefix, field, value, rule};
   };
   if (!positive(tire.stiffness_factor_b)) {
     return bad("stiffness_factor_b", tire.stiffness_factor_b, "must be finite and > 0");
@@ -34,8 +37,6 @@ std::optional<Violation> tire_violation(const char* prefix, const TireParameters
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 double VehicleParameters::front_cornering_stiffness_npr() const noexcept {
   return front_tire.normalized_cornering_stiffness() * front_axle_load_n();
@@ -81,8 +82,8 @@ std::optional<Violation> VehicleParameters::first_violation() const noexcept {
     return bad("cg_height_m", cg_height_m, "must be finite and >= 0");
   }
   if (!positive(gravity_mps2)) return bad("gravity_mps2", gravity_mps2, "must be finite and > 0");
-  if (auto v = tire_violation("front_tire.", front_tire)) return v;
-  if (auto v = tire_violation("rear_tire.", rear_tire)) return v;
+  if (auto v = tire_violation(owner, "front_tire.", front_tire)) return v;
+  if (auto v = tire_violation(owner, "rear_tire.", rear_tire)) return v;
   if (!positive(max_steering_angle_rad) || max_steering_angle_rad >= 1.5) {
     return bad("max_steering_angle_rad", max_steering_angle_rad, "must be in (0, 1.5)");
   }

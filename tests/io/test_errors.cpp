@@ -97,6 +97,8 @@ TEST_F(ScenarioErrors, OutOfRangeValues) {
                   {"'simulation'", "control_period_s", "whole multiple"});
   expect_contains(error_of(file, {"controller.lead_curvature_bound=0.9"}),
                   {"'controller'", "must be < 1"});
+  expect_contains(error_of(file, {"simulation.side_slip.tire_model=pacejka"}),
+                  {file, "'simulation.side_slip.tire_model'", "pacejka", "must be one of"});
   expect_contains(error_of(file, {"controller.type=stanley_typo"}),
                   {"'controller.type'", "stanley_typo", "must be one of"});
 }

@@ -1,7 +1,11 @@
 #pragma once
 // Shared helpers of the simulation tests.
 
+#include <random>
+
 #include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/vehicle/side_slip_observer.hpp"
+#include "smoothsteer/vehicle/vehicle_model.hpp"
 
 namespace smoothsteer::testing {
 
@@ -21,5 +25,40 @@ class ConstantSteering final : public SteeringController {
  private:
   double angle_;
 };
+
+//! One classic RK4 step of the vehicle model with the steering held and no longitudinal
+//! acceleration.
+inline VehicleState vehicle_rk4_step(const VehicleModel& model, const VehicleState& x, double delta,
+                                     double h) {
+  auto add = [](const VehicleState& a, const VehicleState& b, double k) {
+    return VehicleState{
+        a.x_m + k * b.x_m,       a.y_m + k * b.y_m,       a.heading_rad + k * b.heading_rad,
+        a.vx_mps + k * b.vx_mps, a.vy_mps + k * b.vy_mps, a.yaw_rate_radps + k * b.yaw_rate_radps};
+  };
+  const VehicleState k1 = model.derivative(x, delta, 0.0);
+  const VehicleState k2 = model.derivative(add(x, k1, h / 2), delta, 0.0);
+  const VehicleState k3 = model.derivative(add(x, k2, h / 2), delta, 0.0);
+  const VehicleState k4 = model.derivative(add(x, k3, h), delta, 0.0);
+  VehicleState out = x;
+  out = add(out, k1, h / 6);
+  out = add(out, k2, h / 3);
+  out = add(out, k3, h / 3);
+  out = add(out, k4, h / 6);
+  return out;
+}
+
+//! What a car's sensors report at state x with the road-wheel angle delta: speed, a gyro with
+//! 0.002 rad/s and an accelerometer at the CG with 0.05 m/s^2 of Gaussian noise.
+inline SideSlipMeasurement noisy_slip_sensors(const VehicleModel& model, const VehicleState& x,
+                                              double delta, std::mt19937_64& engine) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const VehicleState rates = model.derivative(x, delta, 0.0);
+  SideSlipMeasurement m;
+  m.speed_mps = x.vx_mps;
+  m.yaw_rate_radps = x.yaw_rate_radps + 0.002 * normal(engine);
+  m.lateral_acceleration_mps2 = rates.vy_mps + x.vx_mps * x.yaw_rate_radps + 0.05 * normal(engine);
+  m.steering_angle_rad = delta;
+  return m;
+}
 
 }  // namespace smoothsteer::testing

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "sim_test_support.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path_builder.hpp"
@@ -19,32 +20,17 @@ namespace smoothsteer {
 namespace {
 
 using testing::case_seed;
+using testing::noisy_slip_sensors;
 using testing::property_cases;
 using testing::Random;
 using testing::seed_message;
-
-VehicleState rk4(const VehicleModel& model, const VehicleState& x, double delta, double h) {
-  auto add = [](const VehicleState& a, const VehicleState& b, double k) {
-    return VehicleState{
-        a.x_m + k * b.x_m,       a.y_m + k * b.y_m,       a.heading_rad + k * b.heading_rad,
-        a.vx_mps + k * b.vx_mps, a.vy_mps + k * b.vy_mps, a.yaw_rate_radps + k * b.yaw_rate_radps};
-  };
-  const VehicleState k1 = model.derivative(x, delta, 0.0);
-  const VehicleState k2 = model.derivative(add(x, k1, h / 2), delta, 0.0);
-  const VehicleState k3 = model.derivative(add(x, k2, h / 2), delta, 0.0);
-  const VehicleState k4 = model.derivative(add(x, k3, h), delta, 0.0);
-  VehicleState out = x;
-  out = add(out, k1, h / 6);
-  out = add(out, k2, h / 3);
-  out = add(out, k3, h / 3);
-  out = add(out, k4, h / 6);
-  return out;
-}
+using testing::vehicle_rk4_step;
 
 // Random manoeuvres of the kinetic (Pacejka) model: a steady turn at the start that the observer
 // does not know, then sums of sines of the steering with lateral accelerations up to 5 m/s^2,
 // noisy gyro and accelerometer. After 1.5 s the rear-axle slip estimate is within 15 % of the
-// manoeuvre's largest slip plus 4 mrad, and its RMS error within 5 % plus 1 mrad.
+// manoeuvre's largest slip plus 4 mrad, and its RMS error within 5 % plus 1 mrad, with either tire
+// model.
 TEST(SideSlipObserver, ConvergesOnRandomManoeuvresOfTheKineticModel) {
   const VehicleParameters car;
   const DynamicSingleTrack model(car);
@@ -70,40 +56,43 @@ TEST(SideSlipObserver, ConvergesOnRandomManoeuvresOfTheKineticModel) {
     };
     // Settle a steady turn with the initial steering (unknown to the observer).
     VehicleState x{0.0, 0.0, 0.0, speed, 0.0, 0.0};
-    for (int k = 0; k < 3000; ++k) x = rk4(model, x, steering(0.0), 1e-3);
-    SideSlipObserverParameters p = SideSlipObserverParameters::from_vehicle(car);
-    SideSlipObserver observer(p);
-    std::normal_distribution<double> normal(0.0, 1.0);
-    double largest = 0.0, worst = 0.0, sum_squares = 0.0;
+    for (int k = 0; k < 3000; ++k) x = vehicle_rk4_step(model, x, steering(0.0), 1e-3);
+    // Both tire models on the same measurements: in this linear range they must both hold.
+    const ObserverTireModel models[2] = {ObserverTireModel::linear,
+                                         ObserverTireModel::magic_formula};
+    SideSlipObserver observers[2] = {
+        SideSlipObserver(SideSlipObserverParameters::from_vehicle(car, 1.0, 1.0, models[0])),
+        SideSlipObserver(SideSlipObserverParameters::from_vehicle(car, 1.0, 1.0, models[1]))};
+    double largest = 0.0, worst[2] = {0.0, 0.0}, sum_squares[2] = {0.0, 0.0};
     int counted = 0;
     const double period = 0.02;
     for (int k = 0; k <= 500; ++k) {
       const double t = k * period;
       const double delta = steering(t);
-      const VehicleState rates = model.derivative(x, delta, 0.0);
-      SideSlipMeasurement m;
-      m.speed_mps = x.vx_mps;
-      m.yaw_rate_radps = x.yaw_rate_radps + 0.002 * normal(random.engine());
-      m.lateral_acceleration_mps2 =
-          rates.vy_mps + x.vx_mps * x.yaw_rate_radps + 0.05 * normal(random.engine());
-      m.steering_angle_rad = delta;
-      ASSERT_EQ(observer.update(m, period), Status::ok) << seed_message(seed);
+      const SideSlipMeasurement m = noisy_slip_sensors(model, x, delta, random.engine());
       const double truth = rear_axle_side_slip_angle(x, car);
       largest = std::max(largest, std::abs(truth));
-      if (t >= 1.5) {
-        const double error = std::abs(observer.rear_axle_side_slip_rad() - truth);
-        worst = std::max(worst, error);
-        sum_squares += error * error;
-        ++counted;
+      for (int i = 0; i < 2; ++i) {
+        ASSERT_EQ(observers[i].update(m, period), Status::ok) << seed_message(seed);
+        if (t >= 1.5) {
+          const double error = std::abs(observers[i].rear_axle_side_slip_rad() - truth);
+          worst[i] = std::max(worst[i], error);
+          sum_squares[i] += error * error;
+        }
       }
-      for (int j = 0; j < 20; ++j) x = rk4(model, x, delta, 1e-3);  // held over the period
+      if (t >= 1.5) ++counted;
+      for (int j = 0; j < 20; ++j)
+        x = vehicle_rk4_step(model, x, delta, 1e-3);  // held over the period
     }
-    const double rms = std::sqrt(sum_squares / counted);
-    EXPECT_LE(worst, 0.15 * largest + 0.004)
-        << "v " << speed << " amplitude " << amplitude << " largest slip " << largest << "; "
-        << seed_message(seed);
-    EXPECT_LE(rms, 0.05 * largest + 0.001)
-        << "v " << speed << " amplitude " << amplitude << "; " << seed_message(seed);
+    for (int i = 0; i < 2; ++i) {
+      const char* name = i == 0 ? "linear" : "magic_formula";
+      const double rms = std::sqrt(sum_squares[i] / counted);
+      EXPECT_LE(worst[i], 0.15 * largest + 0.004)
+          << name << ": v " << speed << " amplitude " << amplitude << " largest slip " << largest
+          << "; " << seed_message(seed);
+      EXPECT_LE(rms, 0.05 * largest + 0.001)
+          << name << ": v " << speed << " amplitude " << amplitude << "; " << seed_message(seed);
+    }
   }
 }
 

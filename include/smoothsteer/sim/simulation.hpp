@@ -18,6 +18,7 @@
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/sim/speed_profile.hpp"
+#include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "smoothsteer/vehicle/steering_actuator.hpp"
 #include "smoothsteer/vehicle/vehicle_model.hpp"
 
@@ -54,6 +55,9 @@ struct SideSlipEstimation {
   //! stiffnesses and mass/yaw inertia times these factors.
   double cornering_stiffness_scale = 1.0;
   double mass_scale = 1.0;
+  //! The observer's tire model (side_slip_observer.hpp): linear, or the Magic Formula near the
+  //! friction limit.
+  ObserverTireModel tire_model = ObserverTireModel::linear;
   //! Gaussian noise on the simulated sensors (the observer assumes the same stds, at least
   //! its defaults).
   double yaw_rate_noise_std_radps = 0.0;

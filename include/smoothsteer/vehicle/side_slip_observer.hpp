@@ -14,6 +14,11 @@
 //! Assumptions: linear tires (small slip angles, far from the friction limit), constant vx over
 //! a period, a flat road, the accelerometer at the CG and free of roll. update() is noexcept,
 //! allocation free and deterministic.
+//! Near the friction limit the linear tire overstates the force a slip angle gives, so the filter
+//! understates the slip. `ObserverTireModel::magic_formula` replaces the linear axle forces with
+//! the vehicle file's lateral Magic Formula (Pacejka; the plant's own curve, scaled to the
+//! believed cornering stiffness) and runs an extended Kalman filter on the same state and
+//! measurements (docs/vehicle_dynamics.md, section 2).
 
 #include <optional>
 #include <string>
@@ -23,6 +28,9 @@
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
 
 namespace smoothsteer {
+
+//! The observer's tire model: the linear single-track model, or each axle's Magic Formula.
+enum class ObserverTireModel { linear, magic_formula };
 
 struct SideSlipObserverParameters {
   double mass_kg = 1093.3;                            //!< m [kg]
@@ -37,15 +45,23 @@ struct SideSlipObserverParameters {
   //! unmodelled yaw acceleration [rad/s^2] (tire nonlinearity, parameter error).
   double lateral_process_std_mps2 = 0.5;
   double yaw_process_std_radps2 = 0.5;
+  ObserverTireModel tire_model = ObserverTireModel::linear;
+  //! magic_formula only: the shape of each axle's curve (C, mu, E). Its B is not used: the curve
+  //! is scaled so that its slope at zero is the cornering stiffness above, B = C_alpha / (C D),
+  //! with D = mu Fz at the static axle load of mass_kg.
+  TireParameters front_tire;
+  TireParameters rear_tire;
+  double gravity_mps2 = 9.81;  //!< g [m/s^2], for the static axle loads
   //! Below this speed the model is singular (1/vx); the estimate is kinematic: beta_r = 0 [m/s].
   double min_speed_mps = 2.0;
 
-  //! The vehicle file's parameters: Cf, Cr = B C D at the static axle loads. The scales model
-  //! a wrong belief (robustness study): both stiffnesses times `cornering_stiffness_scale`,
-  //! mass and yaw inertia times `mass_scale`.
-  static SideSlipObserverParameters from_vehicle(const VehicleParameters& vehicle,
-                                                 double cornering_stiffness_scale = 1.0,
-                                                 double mass_scale = 1.0);
+  //! The vehicle file's parameters: Cf, Cr = B C D at the static axle loads, and its tires. The
+  //! scales model a wrong belief (robustness study): both stiffnesses times
+  //! `cornering_stiffness_scale`, mass and yaw inertia (and with them the believed axle loads,
+  //! hence the peak forces of magic_formula) times `mass_scale`.
+  static SideSlipObserverParameters from_vehicle(
+      const VehicleParameters& vehicle, double cornering_stiffness_scale = 1.0,
+      double mass_scale = 1.0, ObserverTireModel tire_model = ObserverTireModel::linear);
 
   //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
   std::optional<Violation> first_violation() const noexcept;

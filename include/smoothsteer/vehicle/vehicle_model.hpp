@@ -92,6 +92,9 @@ class DynamicSingleTrack final : public VehicleModel {
   //! Lateral Magic Formula force [N] for slip angle alpha [rad] and vertical load Fz [N].
   static double lateral_force(const TireParameters& tire, double slip_angle_rad,
                               double vertical_load_n) noexcept;
+  //! Its slope dFy / dalpha [N/rad] (B C D at alpha = 0: the cornering stiffness).
+  static double lateral_force_slope(const TireParameters& tire, double slip_angle_rad,
+                                    double vertical_load_n) noexcept;
   //! Front and rear slip angles [rad] (0 at standstill).
   struct SlipAngles {
     double front_rad = 0.0;

@@ -25,6 +25,10 @@ struct TireParameters {
   }
 };
 
+//! The first rule the tire breaks, reported as `owner`.`prefix`field (validation.hpp).
+std::optional<Violation> tire_violation(const char* owner, const char* prefix,
+                                        const TireParameters& tire) noexcept;
+
 struct VehicleParameters {
   double mass_kg = 1093.3;                //!< m [kg]
   double yaw_inertia_kgm2 = 1791.6;       //!< Iz [kg m^2]
