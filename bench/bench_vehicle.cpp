@@ -14,11 +14,12 @@ namespace smoothsteer {
 namespace {
 
 void observer_update(benchmark::State& state, ObserverTireModel tire_model) {
-  SideSlipObserver observer(
-      SideSlipObserverParameters::from_vehicle(VehicleParameters{}, 1.0, 1.0, tire_model));
+  const VehicleParameters car;
+  SideSlipObserver observer(SideSlipObserverParameters::from_vehicle(car, 1.0, 1.0, tire_model));
+  const double wheelbase = car.wheelbase_m();
   const double speed = 0.01 * static_cast<double>(state.range(0));
   // Up to 9 m/s^2, and steering angles up to 0.3 rad at low speed.
-  const double amplitude = std::min(9.0, 0.3 * speed * speed / 2.578);
+  const double amplitude = std::min(9.0, 0.3 * speed * speed / wheelbase);
   int k = 0;
   for (auto _ : state) {
     const double phase = 0.02 * static_cast<double>(k++);
@@ -26,7 +27,7 @@ void observer_update(benchmark::State& state, ObserverTireModel tire_model) {
     m.speed_mps = speed;
     m.lateral_acceleration_mps2 = amplitude * std::sin(0.8 * phase);
     m.yaw_rate_radps = m.lateral_acceleration_mps2 / speed;
-    m.steering_angle_rad = 2.578 * m.lateral_acceleration_mps2 / (speed * speed);
+    m.steering_angle_rad = wheelbase * m.lateral_acceleration_mps2 / (speed * speed);
     benchmark::DoNotOptimize(observer.update(m, 0.02));
     benchmark::DoNotOptimize(observer.rear_axle_side_slip_rad());
   }

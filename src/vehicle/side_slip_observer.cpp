@@ -66,24 +66,48 @@ struct AxleForce {
   double force, slope;  //!< Fy [N], dFy / dalpha [N/rad]
 };
 
-AxleForce axle_force(const SideSlipObserverParameters& p, const TireParameters& shape,
-                     double cornering_stiffness, double load, double slip_angle) noexcept {
-  if (p.tire_model == ObserverTireModel::linear) {
-    return {cornering_stiffness * slip_angle, cornering_stiffness};
+//! One axle of the model, derived from the parameters once per update: its cornering stiffness,
+//! and for magic_formula its curve scaled to that stiffness (B = C_alpha / (C D)) at the static
+//! load Fz (front m g lr / L, rear m g lf / L).
+struct Axle {
+  double cornering_stiffness;
+  TireParameters curve;
+  double load;
+
+  AxleForce force(bool linear, double slip_angle) const noexcept {
+    if (linear) return {cornering_stiffness * slip_angle, cornering_stiffness};
+    return {DynamicSingleTrack::lateral_force(curve, slip_angle, load),
+            DynamicSingleTrack::lateral_force_slope(curve, slip_angle, load)};
   }
-  TireParameters tire = shape;
-  tire.stiffness_factor_b = cornering_stiffness / (shape.shape_factor_c * shape.friction_mu * load);
-  return {DynamicSingleTrack::lateral_force(tire, slip_angle, load),
-          DynamicSingleTrack::lateral_force_slope(tire, slip_angle, load)};
+};
+
+struct Axles {
+  bool linear;
+  Axle front, rear;
+};
+
+Axle make_axle(double cornering_stiffness, const TireParameters& shape, double load) noexcept {
+  TireParameters curve = shape;
+  curve.stiffness_factor_b =
+      cornering_stiffness / (shape.shape_factor_c * shape.friction_mu * load);
+  return {cornering_stiffness, curve, load};
+}
+
+Axles make_axles(const SideSlipObserverParameters& p) noexcept {
+  const double lf = p.cg_to_front_axle_m, lr = p.cg_to_rear_axle_m;
+  const double weight_per_length = p.mass_kg * p.gravity_mps2 / (lf + lr);
+  return {p.tire_model == ObserverTireModel::linear,
+          make_axle(p.front_cornering_stiffness_npr, p.front_tire, weight_per_length * lr),
+          make_axle(p.rear_cornering_stiffness_npr, p.rear_tire, weight_per_length * lf)};
 }
 
 //! Rajamani eqs. 2.31 and 2.45 per axle: m (d vy / dt + v r) = Fyr + Fyf cos(delta),
 //! Iz d r / dt = lf Fyf cos(delta) - lr Fyr. The linear model takes the slip angles to first
 //! order and cos(delta) = 1 (the header's matrices); magic_formula keeps them as the plant does.
-LateralModel lateral_model(const SideSlipObserverParameters& p, double v, double delta,
-                           const double x[2]) noexcept {
+LateralModel lateral_model(const SideSlipObserverParameters& p, const Axles& axles, double v,
+                           double delta, const double x[2]) noexcept {
   const double lf = p.cg_to_front_axle_m, lr = p.cg_to_rear_axle_m;
-  const bool linear = p.tire_model == ObserverTireModel::linear;
+  const bool linear = axles.linear;
   const double front_lateral = x[0] + lf * x[1], rear_lateral = x[0] - lr * x[1];
   // Slip angles and their derivatives along vy (d alpha / d r = lf, -lr times these).
   const double front_alpha =
@@ -91,13 +115,8 @@ LateralModel lateral_model(const SideSlipObserverParameters& p, double v, double
   const double rear_alpha = linear ? -rear_lateral / v : -std::atan(rear_lateral / v);
   const double front_gain = linear ? -1.0 / v : -v / (v * v + front_lateral * front_lateral);
   const double rear_gain = linear ? -1.0 / v : -v / (v * v + rear_lateral * rear_lateral);
-  const double wheelbase = lf + lr;
-  const double front_load = p.mass_kg * p.gravity_mps2 * lr / wheelbase;
-  const double rear_load = p.mass_kg * p.gravity_mps2 * lf / wheelbase;
-  const AxleForce front =
-      axle_force(p, p.front_tire, p.front_cornering_stiffness_npr, front_load, front_alpha);
-  const AxleForce rear =
-      axle_force(p, p.rear_tire, p.rear_cornering_stiffness_npr, rear_load, rear_alpha);
+  const AxleForce front = axles.front.force(linear, front_alpha);
+  const AxleForce rear = axles.rear.force(linear, rear_alpha);
   const double cos_delta = linear ? 1.0 : std::cos(delta);
   const double front_y = front.force * cos_delta, front_slope = front.slope * cos_delta;
   LateralModel model{};
@@ -217,7 +236,8 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
   previous_steering_ = m.steering_angle_rad;
   has_previous_ = true;
   double x[2] = {lateral_velocity_, yaw_rate_};
-  const LateralModel start = lateral_model(p, v, held_steering, x);
+  const Axles axles = make_axles(p);
+  const LateralModel start = lateral_model(p, axles, v, held_steering, x);
   const Matrix2& a = start.jacobian;
   Matrix2 phi;  // the covariance's transition, e^{A period} at the prior estimate
   matrix_exponential(a, period_s, phi);
@@ -257,7 +277,7 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
         for (int i = 0; i < 2; ++i) {
           probe[i] = x[i] + (stage == 0 ? 0.0 : weights[stage] * h * k[stage - 1][i]);
         }
-        const LateralModel model = lateral_model(p, v, held_steering, probe);
+        const LateralModel model = lateral_model(p, axles, v, held_steering, probe);
         k[stage][0] = model.rate[0];
         k[stage][1] = model.rate[1];
       }
@@ -283,7 +303,7 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
   const double h_yaw[2] = {0.0, 1.0};
   correct(x, predicted, h_yaw, m.yaw_rate_radps - x[1],
           p.yaw_rate_noise_std_radps * p.yaw_rate_noise_std_radps);
-  const LateralModel at_prediction = lateral_model(p, v, m.steering_angle_rad, x);
+  const LateralModel at_prediction = lateral_model(p, axles, v, m.steering_angle_rad, x);
   const double h_lateral[2] = {at_prediction.jacobian[0][0], at_prediction.jacobian[0][1] + v};
   correct(x, predicted, h_lateral, m.lateral_acceleration_mps2 - at_prediction.lateral_acceleration,
           p.lateral_acceleration_noise_std_mps2 * p.lateral_acceleration_noise_std_mps2);

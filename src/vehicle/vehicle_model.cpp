@@ -60,6 +60,12 @@ VehicleState planar_motion(const VehicleState& s, double yaw_rate, double vy) no
   return d;
 }
 
+//! The Magic Formula's argument B a - E (B a - atan(B a)): Fy = D sin(C atan(.)).
+double magic_formula_argument(const TireParameters& tire, double slip_angle_rad) noexcept {
+  const double b_alpha = tire.stiffness_factor_b * slip_angle_rad;
+  return b_alpha - tire.curvature_factor_e * (b_alpha - std::atan(b_alpha));
+}
+
 }  // namespace
 
 VehicleState KinematicVehicleModel::derivative(
@@ -80,18 +86,16 @@ void KinematicVehicleModel::constrain(VehicleState& state,
 
 double DynamicSingleTrack::lateral_force(const TireParameters& tire, double slip_angle_rad,
                                          double vertical_load_n) noexcept {
-  const double b_alpha = tire.stiffness_factor_b * slip_angle_rad;
-  const double inner = b_alpha - tire.curvature_factor_e * (b_alpha - std::atan(b_alpha));
+  const double inner = magic_formula_argument(tire, slip_angle_rad);
   return tire.friction_mu * vertical_load_n * std::sin(tire.shape_factor_c * std::atan(inner));
 }
 
 double DynamicSingleTrack::lateral_force_slope(const TireParameters& tire, double slip_angle_rad,
                                                double vertical_load_n) noexcept {
-  const double b = tire.stiffness_factor_b, e = tire.curvature_factor_e;
+  const double b = tire.stiffness_factor_b, c = tire.shape_factor_c;
   const double b_alpha = b * slip_angle_rad;
-  const double inner = b_alpha - e * (b_alpha - std::atan(b_alpha));
-  const double d_inner = b - e * (b - b / (1.0 + b_alpha * b_alpha));
-  const double c = tire.shape_factor_c;
+  const double inner = magic_formula_argument(tire, slip_angle_rad);
+  const double d_inner = b - tire.curvature_factor_e * (b - b / (1.0 + b_alpha * b_alpha));
   return tire.friction_mu * vertical_load_n * std::cos(c * std::atan(inner)) * c /
          (1.0 + inner * inner) * d_inner;
 }
