@@ -28,6 +28,20 @@ std::shared_ptr<const Path> curved_path() {
   return path;
 }
 
+//! circle_sections' path (scenarios/circle_sections.yaml): lines and arcs of 30-50 m, with
+//! five curvature jumps.
+std::shared_ptr<const Path> circle_sections_path() {
+  static const auto path = std::make_shared<const Path>(PathBuilder({0.0, 0.0}, 0.0)
+                                                            .line(15.0)
+                                                            .arc(30.0, pi / 2.0)
+                                                            .arc(40.0, -pi)
+                                                            .arc(50.0, pi)
+                                                            .arc(30.0, -pi / 2.0)
+                                                            .line(30.0)
+                                                            .build());
+  return path;
+}
+
 std::shared_ptr<const Path> straight_path() {
   static const auto path =
       std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 5000.0));
@@ -39,6 +53,7 @@ enum class Law {
   defaults,  //!< ControllerParameters{}: feedforward without rate limit, rear-axle target
   preview,   //!< rate-limited feedforward with preview, as the certified schedules use it
   exact,     //!< the same with the exact rear-axle target and the single-track inversion
+  planned,   //!< the same with the planned curvature jumps (jump_plan.hpp)
   paper,     //!< the paper's law: no feedforward, the lead wheel on the path
 };
 
@@ -46,11 +61,14 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
   ControllerParameters parameters;
   parameters.order = order;
   parameters.lead_curvature_bound = 0.1;
-  if (law == Law::preview || law == Law::exact) parameters.feedforward_curvature_rate = 0.005;
-  if (law == Law::exact) {
+  if (law == Law::preview || law == Law::exact || law == Law::planned) {
+    parameters.feedforward_curvature_rate = 0.005;
+  }
+  if (law == Law::exact || law == Law::planned) {
     parameters.cornering_target = CorneringTarget::rear_axle_exact;
     parameters.rear_slip_gradient_s2pm = parameters.front_slip_gradient_s2pm = 0.00465;
   }
+  if (law == Law::planned) parameters.curvature_preview = CurvaturePreview::planned_jumps;
   if (law == Law::paper) {
     parameters.feedforward_share = 0.0;
     parameters.boundary_layer = 0.0;
@@ -87,6 +105,15 @@ void BM_UpdateCurvedPath10kPreview(benchmark::State& state) {
 void BM_UpdateCurvedPath10kExactTarget(benchmark::State& state) {
   update_cost(state, curved_path(), Law::exact);
 }
+void BM_UpdateCurvedPath10kPlannedJumps(benchmark::State& state) {
+  update_cost(state, curved_path(), Law::planned);
+}
+void BM_UpdateCircleSectionsExactTarget(benchmark::State& state) {
+  update_cost(state, circle_sections_path(), Law::exact);
+}
+void BM_UpdateCircleSectionsPlannedJumps(benchmark::State& state) {
+  update_cost(state, circle_sections_path(), Law::planned);
+}
 void BM_UpdateCurvedPath10kPaperLaw(benchmark::State& state) {
   update_cost(state, curved_path(), Law::paper);
 }
@@ -120,6 +147,9 @@ BENCHMARK(BM_UpdateCurvedPath10k)
     ->ReportAggregatesOnly(true);
 BENCHMARK(BM_UpdateCurvedPath10kPreview)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kExactTarget)->Arg(1)->Arg(2);
+BENCHMARK(BM_UpdateCurvedPath10kPlannedJumps)->Arg(1)->Arg(2);
+BENCHMARK(BM_UpdateCircleSectionsExactTarget)->Arg(2);
+BENCHMARK(BM_UpdateCircleSectionsPlannedJumps)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kPaperLaw)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateFarFromCurvedPath10k)->Arg(2)->Repetitions(3)->ReportAggregatesOnly(true);
 

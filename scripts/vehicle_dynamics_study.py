@@ -20,6 +20,7 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENARIOS = ["lane_change_10", "lane_change_15", "lane_change_19", "circle_sections"]
 OFF = ["controller.slip_preview=false", "controller.preview_time_s=0", "controller.cornering_target=rear_axle",
+       "controller.curvature_preview=centred_ramp",
        "simulation.side_slip.source=none"]
 # The scenarios' actuator: 10 Hz third-order low-pass, T = 1 / pole = sqrt(2^(1/3) - 1) / (2 pi 10).
 ACTUATOR_T = math.sqrt(2 ** (1 / 3) - 1) / (2 * math.pi * 10.0)

@@ -26,6 +26,7 @@ from ._smoothsteer import (  # noqa: F401
     KinematicSingleTrack,
     PathPlan,
     CorneringTarget,
+    CurvaturePreview,
     GainSchedule,
     HosmController,
     InfeasibleLimits,

@@ -55,6 +55,12 @@ void bind_controller(py::module_& m) {
   py::enum_<SlidingSurface>(m, "SlidingSurface")
       .value("global_", SlidingSurface::global, "globally convergent (default)")
       .value("paper", SlidingSurface::paper, "eq. (sigma) as printed");
+  py::enum_<CurvaturePreview>(m, "CurvaturePreview")
+      .value("centred_ramp", CurvaturePreview::centred_ramp,
+             "a jump becomes a ramp at L_ff centred on it (default)")
+      .value("planned_jumps", CurvaturePreview::planned_jumps,
+             "each curvature jump gets a planned counter-steer and overshoot "
+             "(docs/feedforward.md, section 2b)");
   py::enum_<CorneringTarget>(m, "CorneringTarget")
       .value("rear_axle", CorneringTarget::rear_axle, "the rear axle on the path (default)")
       .value("rear_axle_exact", CorneringTarget::rear_axle_exact,
@@ -86,6 +92,7 @@ void bind_controller(py::module_& m) {
       .def_readwrite("actuator_delay_s", &P::actuator_delay_s, "known actuator delay [s]")
       .def_readwrite("surface", &P::surface)
       .def_readwrite("cornering_target", &P::cornering_target)
+      .def_readwrite("curvature_preview", &P::curvature_preview)
       .def_readwrite("max_substep_fraction", &P::max_substep_fraction)
       .def_readwrite("max_substeps", &P::max_substeps)
       .def("validate", &P::validate, "Raises ValueError naming the field, value and rule.")

@@ -67,6 +67,8 @@ def test_parameter_errors_name_field_value_and_rule():
     with pytest.raises(ValueError) as catch_up:
         ss.ControllerParameters(feedforward_catch_up=1.5).validate()
     assert str(catch_up.value) == "ControllerParameters: feedforward_catch_up = 1.5 must be in [0, 1]"
+    with pytest.raises(ValueError, match="curvature_preview .* rear_axle_exact"):
+        ss.ControllerParameters(curvature_preview=ss.CurvaturePreview.planned_jumps).validate()
 
 
 def test_path_errors():

@@ -70,6 +70,25 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
       p.feedforward_catch_up > 1.0) {
     return fail(text("feedforward_catch_up"), p.feedforward_catch_up, text("must be in [0, 1]"));
   }
+  if (p.curvature_preview == CurvaturePreview::planned_jumps) {
+    const int preview = static_cast<int>(p.curvature_preview);
+    if (p.cornering_target != CorneringTarget::rear_axle_exact) {
+      return fail(text("curvature_preview (1 = planned_jumps)"), preview,
+                  text("planned_jumps needs cornering_target rear_axle_exact (the plan is the "
+                       "rear axle's curvature, which only the chain's inverse turns into a "
+                       "target)"));
+    }
+    if (p.order < 1 || p.order > 2) {
+      return fail(text("curvature_preview (1 = planned_jumps)"), preview,
+                  text("planned_jumps needs order 1 or 2 (the plan's lags are simulated for "
+                       "those)"));
+    }
+    if (!std::isfinite(p.feedforward_curvature_rate) || !(p.feedforward_curvature_rate > 0.0)) {
+      return fail(text("curvature_preview (1 = planned_jumps)"), preview,
+                  text("planned_jumps needs a finite feedforward_curvature_rate > 0 (the plan "
+                       "ramps at it)"));
+    }
+  }
   if (!std::isfinite(p.boundary_layer) || p.boundary_layer < 0.0) {
     return fail(text("boundary_layer"), p.boundary_layer, text("must be finite and >= 0"));
   }

@@ -7,6 +7,7 @@
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/feedforward.hpp"
+#include "smoothsteer/controller/jump_plan.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
@@ -167,7 +168,11 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   const double s = lead.arc_length_m + dynamics_preview_m_ - (exact ? chain_reach_ : 0.0);
   const bool limited = std::isfinite(rate) && rate > 0.0;
   PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
-  if (exact) {
+  const bool planned =
+      exact && limited && parameters_.curvature_preview == CurvaturePreview::planned_jumps;
+  if (planned) {
+    // The jet comes from the plan's lagged response below (jump_plan.hpp).
+  } else if (exact) {
     // The exact target needs the curvature's first two derivatives, so a jump always becomes a
     // centred ramp: at L_ff, or without a rate limit over the chain's reach. The samples keep
     // the path's own magnitude; the feedforward is clamped to kbar_ff afterwards.
@@ -186,7 +191,10 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   // correction on top of the preview; then, with a plant disturbance kappa_d, the chain runs on
   // kappa - kappa_d while the rear axle follows kappa (docs/feedforward.md, "disturbances on the
   // vehicle").
-  CurvatureJet jet = curvature_jet(curvature.before, curvature.at, curvature.after);
+  CurvatureJet jet = planned ? planned_rear_curvature_jet(
+                                   *path_, s, rate, parameters_.feedforward_curvature_bound(),
+                                   parameters_.wheelbases_m.data(), parameters_.order)
+                             : curvature_jet(curvature.before, curvature.at, curvature.after);
   jet.value = dynamics_gain_ * jet.value + dynamics_bend_m2_ * jet.bend;
   jet.slope *= dynamics_gain_;
   jet.bend *= dynamics_gain_;

@@ -14,7 +14,9 @@ namespace {
 constexpr double speed_step_mps = 0.5;  // the step of the committed schedules (scenarios/*.yaml)
 constexpr double gravity_mps2 = 9.81;   // as load_vehicle_limits
 
-//! The options of the scenario's committed schedule: its template (`base`) and its order.
+//! The options of the scenario's committed schedule: its template (`base`), its order and its
+//! feedforward headroom (the largest kbar_ff over the path's curvature bound; the CSV does not
+//! store the headroom, `tune --feedforward-headroom`).
 TuningOptions scenario_schedule_options(const io::Scenario& scenario) {
   const std::unique_ptr<SteeringController> own = io::make_controller(scenario);
   const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
@@ -22,7 +24,19 @@ TuningOptions scenario_schedule_options(const io::Scenario& scenario) {
     throw std::invalid_argument(scenario.file + ": key 'controller.type': the certified route " +
                                 "needs a scheduled_lead_wheel, not '" + own->name() + "'");
   }
-  return scheduled->schedule().options();
+  TuningOptions options = scheduled->schedule().options();
+  apply_path_demand(options, scenario.path);
+  double largest_feedforward_bound = 0.0;
+  for (const ScheduleEntry& e : scheduled->schedule().entries()) {
+    largest_feedforward_bound = std::max(largest_feedforward_bound, e.feedforward_curvature_bound);
+  }
+  if (options.path_curvature_bound > 0.0 && largest_feedforward_bound > 0.0) {
+    constexpr double resolution = 1e6;  // the CSV's 12 digits leave the ratio off by ~1e-11
+    const double ratio = largest_feedforward_bound / options.path_curvature_bound;
+    options.feedforward_headroom =
+        std::clamp(std::round(ratio * resolution) / resolution, 1.0, 3.0);
+  }
+  return options;
 }
 
 }  // namespace
@@ -55,6 +69,7 @@ TuningOptions certified_route_options(const io::Scenario& scenario,
   options.certificate = Certificate::feedforward;
   options.base = committed.base;
   options.order = committed.order;
+  options.feedforward_headroom = committed.feedforward_headroom;
   apply_path_demand(options, scenario.path);
   if (scenario.speed.acceleration_mps2 > 0.0 &&
       scenario.speed.final_speed_mps != scenario.speed.initial_speed_mps) {

@@ -78,6 +78,11 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
   for (std::size_t k = 0; k < 3; ++k) {
     if (target == names[k]) p.cornering_target = kinds[k];
   }
+  const bool planned = defaults.curvature_preview == CurvaturePreview::planned_jumps;
+  p.curvature_preview = c.text("curvature_preview", planned ? "planned_jumps" : "centred_ramp",
+                               {"centred_ramp", "planned_jumps"}) == "planned_jumps"
+                            ? CurvaturePreview::planned_jumps
+                            : CurvaturePreview::centred_ramp;
   p.max_substep_fraction =
       c.number("max_substep_fraction", defaults.max_substep_fraction, {0.0, 1.0, true, false});
   p.max_substeps = c.integer("max_substeps", defaults.max_substeps, 1, 10000);

@@ -216,6 +216,20 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
     const double at = std::min(path.length_, static_cast<double>(i) * path.curvature_spacing_);
     path.curvature_samples_[i] = path.evaluate(at).curvature;
   }
+  // Curvature steps at the joints, and against the straight extensions of an open path.
+  const auto& pieces = path.segments_;
+  auto start_curvature = [](const PathSegment& p) { return p.evaluate_parameter(0.0).curvature; };
+  auto end_curvature = [](const PathSegment& p) {
+    return p.evaluate_parameter(p.parameter_end()).curvature;
+  };
+  auto add_jump = [&path](double at, double before, double after) {
+    if (std::abs(after - before) > min_curvature_jump)
+      path.curvature_jumps_.push_back({at, before, after});
+  };
+  add_jump(0.0, closed ? end_curvature(pieces.back()) : 0.0, start_curvature(pieces.front()));
+  for (std::size_t i = 1; i < pieces.size(); ++i)
+    add_jump(pieces[i].s0, end_curvature(pieces[i - 1]), start_curvature(pieces[i]));
+  if (!closed) add_jump(path.length_, end_curvature(pieces.back()), 0.0);
   return path;
 }
 

@@ -32,6 +32,9 @@ ControllerParameters random_feedforward_parameters(Random& random, int order) {
   const CorneringTarget targets[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
                                      CorneringTarget::lead_wheel};
   p.cornering_target = targets[random.integer(0, 2)];
+  if (p.cornering_target == CorneringTarget::rear_axle_exact && order <= 2 && random.coin()) {
+    p.curvature_preview = CurvaturePreview::planned_jumps;
+  }
   return p;
 }
 
@@ -40,8 +43,8 @@ std::string describe_case(const ControllerParameters& p, const char* path, const
   text << describe(p) << " share=" << p.feedforward_share
        << " L_ff=" << p.feedforward_curvature_rate << " catch_up=" << p.feedforward_catch_up
        << " eps=" << p.boundary_layer << " target=" << static_cast<int>(p.cornering_target)
-       << " path=" << path << " start=(" << start.position.x << "," << start.position.y << ","
-       << start.heading_rad << ")";
+       << " preview=" << static_cast<int>(p.curvature_preview) << " path=" << path << " start=("
+       << start.position.x << "," << start.position.y << "," << start.heading_rad << ")";
   return text.str();
 }
 
@@ -53,7 +56,7 @@ TEST(FeedforwardCertificate, HeldCommandStaysWithinTheCertificate) {
     Random random(seed);
     const int order = random.coin() ? 2 : 1;
     const ControllerParameters p = random_feedforward_parameters(random, order);
-    const auto kind = static_cast<PathKind>(random.integer(0, 2));
+    const auto kind = static_cast<PathKind>(random.integer(0, 3));
     const auto path = random_path(random, kind, random.uniform(0.3, 1.2) * p.lead_curvature_bound);
     const Pose2 start{{random.uniform(-60.0, 60.0), random.uniform(-60.0, 60.0)},
                       random.uniform(-pi, pi)};
@@ -138,6 +141,9 @@ TEST(FeedforwardCertificate, ConvergesFromFarStartsOnCurvedPaths) {
     // The rear axle itself converges, with either rear-axle target.
     p.cornering_target =
         random.coin() ? CorneringTarget::rear_axle : CorneringTarget::rear_axle_exact;
+    if (p.cornering_target != CorneringTarget::rear_axle_exact) {
+      p.curvature_preview = CurvaturePreview::centred_ramp;
+    }
     const auto kind = random.coin() ? PathKind::circle : PathKind::line;
     const auto path = random_path(random, kind, 0.9 * p.feedforward_curvature_bound());
     const Pose2 start{{random.uniform(-80.0, 80.0), random.uniform(-80.0, 80.0)},

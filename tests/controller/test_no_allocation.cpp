@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/path/path_builder.hpp"
 #include "support/counting_allocator.hpp"
 
 namespace smoothsteer {
@@ -42,6 +43,35 @@ TEST(RealTime, UpdateDoesNotAllocate) {
       controller.update({{position.x, std::nan("")}, 0.0, speed, 0.0, 0.02}, output);
       position.x += 0.2;
       position.y *= 0.999;
+    }
+    EXPECT_EQ(allocation_count.load() - before, 0) << "order " << order;
+  }
+}
+
+// The planned jumps (jump_plan.hpp) keep their plans and the lag simulation on the stack, also
+// with more jumps within reach than max_planned_jumps.
+TEST(RealTime, PlannedJumpsUpdateDoesNotAllocate) {
+  PathBuilder builder({0.0, 0.0}, 0.0);
+  builder.line(20.0);
+  for (int k = 0; k < 60; ++k) builder.arc(k % 3 == 0 ? 40.0 : 25.0, k % 2 == 0 ? 0.05 : -0.05);
+  builder.line(50.0);
+  auto path = std::make_shared<const Path>(builder.build());
+  ASSERT_GT(path->curvature_jumps().size(), 50u);
+  for (int order = 1; order <= 2; ++order) {
+    ControllerParameters parameters;
+    parameters.order = order;
+    parameters.lead_curvature_bound = 0.08;
+    parameters.feedforward_share = 0.8;
+    parameters.feedforward_curvature_rate = 0.02;
+    parameters.cornering_target = CorneringTarget::rear_axle_exact;
+    parameters.curvature_preview = CurvaturePreview::planned_jumps;
+    LeadWheelController controller(parameters, path);
+    ControllerOutput output;
+    Vec2 position{0.0, 1.0};
+    const long before = allocation_count.load();
+    for (int k = 0; k < 2000; ++k) {
+      controller.update({position, 0.0, 8.0, 0.0, 0.02}, output);
+      position.x += 0.1;
     }
     EXPECT_EQ(allocation_count.load() - before, 0) << "order " << order;
   }

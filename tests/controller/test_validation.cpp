@@ -81,6 +81,17 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
   p.feedforward_catch_up = std::numeric_limits<double>::quiet_NaN();
   expect_rejected(p, "feedforward_catch_up = nan", "[0, 1]");
   p = {};
+  p.curvature_preview = CurvaturePreview::planned_jumps;  // default target rear_axle
+  expect_rejected(p, "curvature_preview (1 = planned_jumps) = 1",
+                  "cornering_target rear_axle_exact");
+  p.cornering_target = CorneringTarget::rear_axle_exact;
+  p.order = 3;
+  expect_rejected(p, "curvature_preview (1 = planned_jumps) = 1", "order 1 or 2");
+  p.order = 2;
+  p.feedforward_curvature_rate = inf;
+  expect_rejected(p, "curvature_preview (1 = planned_jumps) = 1",
+                  "finite feedforward_curvature_rate > 0");
+  p = {};
   p.boundary_layer = -0.01;
   expect_rejected(p, "boundary_layer = -0.01", ">= 0");
   p = {};

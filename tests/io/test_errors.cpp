@@ -101,6 +101,15 @@ TEST_F(ScenarioErrors, OutOfRangeValues) {
                   {file, "'simulation.side_slip.tire_model'", "pacejka", "must be one of"});
   expect_contains(error_of(file, {"controller.type=stanley_typo"}),
                   {"'controller.type'", "stanley_typo", "must be one of"});
+  expect_contains(error_of(file, {"controller.curvature_preview=planned"}),
+                  {file, "'controller.curvature_preview'", "planned", "must be one of"});
+  // planned_jumps on the default rear_axle target: the parameters' rule, named.
+  expect_contains(error_of(file, {"controller.curvature_preview=planned_jumps"}),
+                  {"'controller'", "curvature_preview", "rear_axle_exact"});
+  EXPECT_EQ(error_of(file, {"controller.curvature_preview=planned_jumps",
+                            "controller.cornering_target=rear_axle_exact",
+                            "controller.feedforward_curvature_rate=0.02"}),
+            "");
 }
 
 TEST_F(ScenarioErrors, BadOverridesAndWaypointFiles) {

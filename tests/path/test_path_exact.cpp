@@ -164,5 +164,42 @@ TEST(PathBuilder, RightTurnAndClosedLoop) {
   EXPECT_NEAR(wrapped.position.y, 0.0, 1e-9);
 }
 
+TEST(PathCurvatureJumps, ListsEachJointStepAndTheOpenEnds) {
+  // line 10 | arc r 4 left | arc r 5 right | line 3: steps at 0 (none), 10, 10 + 2 pi, ... end.
+  const Path open = PathBuilder({0.0, 0.0}, 0.0)
+                        .line(10.0)
+                        .arc(4.0, pi / 2.0)
+                        .arc(5.0, -pi / 2.0)
+                        .line(3.0)
+                        .build();
+  const auto& jumps = open.curvature_jumps();
+  ASSERT_EQ(jumps.size(), 3u);  // the line ends meet their straight extensions: no step there
+  const double first = 10.0, second = first + 4.0 * pi / 2.0, third = second + 5.0 * pi / 2.0;
+  EXPECT_NEAR(jumps[0].arc_length_m, first, 1e-12);
+  EXPECT_NEAR(jumps[0].before, 0.0, 1e-12);
+  EXPECT_NEAR(jumps[0].after, 0.25, 1e-12);
+  EXPECT_NEAR(jumps[1].arc_length_m, second, 1e-9);
+  EXPECT_NEAR(jumps[1].before, 0.25, 1e-12);
+  EXPECT_NEAR(jumps[1].after, -0.2, 1e-12);
+  EXPECT_NEAR(jumps[2].arc_length_m, third, 1e-9);
+  EXPECT_NEAR(jumps[2].after, 0.0, 1e-12);
+
+  // An open path ending in an arc steps back to its straight extension at the end.
+  const Path arc_end = PathBuilder({0.0, 0.0}, 0.0).arc(2.0, 1.0).build();
+  ASSERT_EQ(arc_end.curvature_jumps().size(), 2u);
+  EXPECT_NEAR(arc_end.curvature_jumps()[0].arc_length_m, 0.0, 1e-12);
+  EXPECT_NEAR(arc_end.curvature_jumps()[1].arc_length_m, 2.0, 1e-12);
+  EXPECT_NEAR(arc_end.curvature_jumps()[1].after, 0.0, 1e-12);
+
+  // A closed loop lists its wrap joint at 0 (line -> arc) once; a circle and a line have none.
+  const Path loop =
+      PathBuilder({0.0, 0.0}, 0.0).line(10.0).arc(2.0, pi).line(10.0).arc(2.0, pi).build(true);
+  ASSERT_EQ(loop.curvature_jumps().size(), 4u);
+  EXPECT_NEAR(loop.curvature_jumps()[0].arc_length_m, 0.0, 1e-12);
+  EXPECT_NEAR(loop.curvature_jumps()[0].before, 0.5, 1e-12);
+  EXPECT_TRUE(Path::circle({0.0, 0.0}, 3.0).curvature_jumps().empty());
+  EXPECT_TRUE(Path::straight_line({0.0, 0.0}, 0.3).curvature_jumps().empty());
+}
+
 }  // namespace
 }  // namespace smoothsteer

@@ -11,6 +11,7 @@
 #include "smoothsteer/controller/trailer_chain.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_builder.hpp"
 #include "support/property.hpp"
 
 namespace smoothsteer::testing {
@@ -51,7 +52,8 @@ inline std::string describe(const ControllerParameters& p) {
   return text.str();
 }
 
-enum class PathKind { line, circle, waypoints };
+//! line, circle and waypoints are C2; line_arcs has curvature jumps at its joints.
+enum class PathKind { line, circle, waypoints, line_arcs };
 
 inline const char* to_string(PathKind kind) {
   switch (kind) {
@@ -61,6 +63,8 @@ inline const char* to_string(PathKind kind) {
       return "circle";
     case PathKind::waypoints:
       return "waypoints";
+    case PathKind::line_arcs:
+      return "line_arcs";
   }
   return "?";
 }
@@ -91,6 +95,18 @@ inline std::shared_ptr<const Path> random_path(Random& random, PathKind kind,
         auto path = std::make_shared<const Path>(Path::from_waypoints(points));
         if (path->max_abs_curvature() <= max_curvature) return path;
       }
+    }
+    case PathKind::line_arcs: {  // a line, 2-4 arcs of random turn, a line
+      PathBuilder builder({random.uniform(-20.0, 20.0), random.uniform(-20.0, 20.0)},
+                          random.uniform(-pi, pi));
+      builder.line(random.uniform(10.0, 40.0));
+      const int arcs = random.integer(2, 4);
+      for (int i = 0; i < arcs; ++i) {
+        const double radius = random.uniform(1.0, 2.0) / max_curvature;
+        builder.arc(radius, (random.coin() ? 1.0 : -1.0) * random.uniform(0.6, 1.6));
+      }
+      builder.line(random.uniform(20.0, 40.0));
+      return std::make_shared<const Path>(builder.build());
     }
   }
   return nullptr;

@@ -35,6 +35,21 @@ enum class CorneringTarget {
   lead_wheel,
 };
 
+//! How the exact rear-axle target previews the path's curvature (docs/feedforward.md, section 2).
+//! Either way the feedforward stays clamped to +-kbar_ff and rate-limited at L_ff, so the
+//! certificate is the same.
+enum class CurvaturePreview {
+  //! A jump becomes a ramp of slope L_ff centred on it (preview_curvature). Local and simple,
+  //! but it leaves the rear axle about J S^2 / 24 off the path (S = J / L_ff).
+  centred_ramp,
+  //! Each jump of the path's curvature (Path::curvature_jumps: the joints of line and arc
+  //! pieces) gets a planned lead curvature that counter-steers and overshoots so that the rear
+  //! axle ends it on the path (jump_plan.hpp, section 2b). Needs cornering_target
+  //! rear_axle_exact, order 1 or 2, a finite L_ff, and kbar_ff well above the path's
+  //! curvature (the plan overshoots: 1.8 times on circle_sections, `tune --feedforward-headroom`).
+  planned_jumps,
+};
+
 struct ControllerParameters {
   //! Largest supported chain length. Fixed-size storage keeps update() allocation free.
   static constexpr int max_order = 8;
@@ -131,6 +146,7 @@ struct ControllerParameters {
   }
   SlidingSurface surface = SlidingSurface::global;
   CorneringTarget cornering_target = CorneringTarget::rear_axle;
+  CurvaturePreview curvature_preview = CurvaturePreview::centred_ramp;
   //! Largest arc-length step [m] of the RK4 integration of the chain, relative to the shortest
   //! wheelbase. A control period is split into at most max_substeps steps.
   double max_substep_fraction = 0.1;

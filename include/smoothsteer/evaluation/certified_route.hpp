@@ -35,9 +35,10 @@ VehicleLimits vehicle_limits_of(const io::Scenario& scenario);
 std::vector<double> certified_speed_grid(const io::Scenario& scenario);
 
 //! The route's options for the scenario: the controller section's parameters as the template,
-//! the path's demand, the speed profile's |dv/dt|; then each knob (key, value) applied. Throws
-//! std::invalid_argument naming a key that is not a knob, or a scenario whose controller is not
-//! a scheduled_lead_wheel.
+//! the committed schedule's feedforward headroom (its largest kbar_ff over the path's curvature
+//! bound, to 1e-6), the path's demand, the speed profile's |dv/dt|; then each knob (key, value)
+//! applied. Throws std::invalid_argument naming a key that is not a knob, or a scenario whose
+//! controller is not a scheduled_lead_wheel.
 TuningOptions certified_route_options(const io::Scenario& scenario,
                                       const std::vector<std::pair<std::string, double>>& knobs);
 

@@ -93,6 +93,18 @@ class Path {
   double sampled_curvature(double arc_length_m) const noexcept;
   //! Sample i (wrapped if closed; 0 outside [0, length()] on open paths).
   double curvature_sample(long index) const noexcept;
+  //! A step of the curvature where two segments meet, or at an end of an open path against its
+  //! straight extension (docs/feedforward.md, section 2b: the planned jumps).
+  struct CurvatureJump {
+    double arc_length_m = 0.0;  //!< where the step is [m]
+    double before = 0.0;        //!< curvature just before it [1/m]
+    double after = 0.0;         //!< curvature just after it [1/m]
+  };
+  //! Steps smaller than this are joints of a smooth path, not jumps [1/m].
+  static constexpr double min_curvature_jump = 1e-6;
+  //! The path's curvature steps, sorted by arc length, built once with the path (a closed
+  //! path's joint at s = 0 is listed there).
+  const std::vector<CurvatureJump>& curvature_jumps() const noexcept { return curvature_jumps_; }
 
   //! Position, heading and curvature at arc length s (wrapped if closed, extended if open).
   PathPoint evaluate(double arc_length_m) const noexcept;
@@ -157,6 +169,7 @@ class Path {
   static constexpr std::size_t max_curvature_samples = 1u << 22;  //!< 32 MiB at most
   double curvature_spacing_ = curvature_sample_spacing;
   std::vector<double> curvature_samples_;
+  std::vector<CurvatureJump> curvature_jumps_;
 };
 
 }  // namespace smoothsteer
