@@ -44,6 +44,9 @@ class Random {
   std::mt19937_64 engine_;
 };
 
+//! The replay line of case `seed` = case_seed(k). A test that draws from an offset stream
+//! (Random(seed + offset), to decorrelate it from other tests) still prints the unoffset seed,
+//! which replays the case as case 0.
 inline std::string seed_message(std::uint64_t seed) {
   return "replay with SMOOTHSTEER_SEED=" + std::to_string(seed) + " SMOOTHSTEER_PROPERTY_CASES=1";
 }

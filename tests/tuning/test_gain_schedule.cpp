@@ -50,7 +50,7 @@ TEST(GainSchedule, LimitsHoldAtEveryGridSpeed) {
     TuningOptions options;
     options.certificate = Certificate::box;  // the paper's route
     options.max_longitudinal_acceleration_mps2 = random.uniform(0.0, 3.0);
-    SCOPED_TRACE(seed_message(case_seed(k) + 21) + " " + describe(vehicle) +
+    SCOPED_TRACE(seed_message(case_seed(k)) + " " + describe(vehicle) +
                  " dv/dt=" + std::to_string(options.max_longitudinal_acceleration_mps2));
     GainSchedule schedule;
     try {
@@ -95,7 +95,7 @@ TEST(GainSchedule, RelaxingALimitNeverLowersTheLeadCurvature) {
       relaxed.max_steering_angle_rad = std::min(1.4, vehicle.max_steering_angle_rad * factor);
     if (which == 1) relaxed.max_steering_rate_radps *= factor;
     if (which == 2) relaxed.max_steering_acceleration_radps2 *= factor;
-    SCOPED_TRACE(seed_message(case_seed(k) + 22) + " " + describe(vehicle) + " relaxed " +
+    SCOPED_TRACE(seed_message(case_seed(k)) + " " + describe(vehicle) + " relaxed " +
                  describe(relaxed));
     const std::vector<double> speeds = speed_grid(1.0, 30.0, 2.0);
     const GainSchedule a = compute_gain_schedule(vehicle, box_route(), speeds, shared_map());
@@ -253,7 +253,7 @@ TEST(ControllerParameters, IsValidAgreesWithValidationError) {
     if (random.integer(0, 9) == 0) p.approach_angle_rad = random.uniform(-1.0, 2.0);
     if (random.integer(0, 9) == 0) p.lead_curvature_bound = std::nan("");
     EXPECT_EQ(p.is_valid(), p.validation_error().empty())
-        << seed_message(case_seed(k) + 23) << " " << p.validation_error();
+        << seed_message(case_seed(k)) << " " << p.validation_error();
   }
 }
 

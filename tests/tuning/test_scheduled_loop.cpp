@@ -45,8 +45,8 @@ TEST(ScheduledLoop, LimitsHoldAtConstantSpeedsFromAnyStart) {
     const Pose2 start{{random.uniform(-50.0, 50.0), random.uniform(-80.0, 80.0)},
                       random.uniform(-pi, pi)};
     std::ostringstream text;
-    text << seed_message(case_seed(k) + 31) << " v=" << speed << " start=(" << start.position.x
-         << "," << start.position.y << "," << start.heading_rad << ")";
+    text << seed_message(case_seed(k)) << " v=" << speed << " start=(" << start.position.x << ","
+         << start.position.y << "," << start.heading_rad << ")";
     SCOPED_TRACE(text.str());
     ScheduledController controller(schedule, path);
     KinematicLoopOptions options;
@@ -80,7 +80,7 @@ void check_limits_while_the_speed_changes(const VehicleLimits& vehicle,
         random.uniform(0.25, 1.0) * options.max_longitudinal_acceleration_mps2;
     Pose2 pose{{0.0, random.uniform(-60.0, 60.0)}, random.uniform(-pi, pi)};
     std::ostringstream text;
-    text << seed_message(case_seed(k) + seed_offset) << " dv/dt=+-" << acceleration << " start=("
+    text << seed_message(case_seed(k)) << " dv/dt=+-" << acceleration << " start=("
          << pose.position.y << "," << pose.heading_rad << ")";
     SCOPED_TRACE(text.str());
     ScheduledController controller(schedule, path);
@@ -174,7 +174,7 @@ TEST(Retune, KeepsTheSteeringRateForTheC1Controller) {
     const ControllerParameters a = random_paper_c1(random, vehicle, theta);
     const ControllerParameters b =
         random_paper_c1(random, vehicle, theta * random.uniform(0.9, 1.1));
-    SCOPED_TRACE(seed_message(case_seed(k) + 34));
+    SCOPED_TRACE(seed_message(case_seed(k)));
     LeadWheelController controller(a, path);
     ControllerOutput out;
     const Vec2 position{0.0, random.uniform(-5.0, 5.0)};
@@ -205,7 +205,7 @@ TEST(Retune, KeepsSteeringContinuousAndRejectsBadParameters) {
     const ControllerParameters a = random_paper_c1(random, vehicle, theta);
     const ControllerParameters b =
         random_paper_c1(random, vehicle, theta * random.uniform(1.0, 1.5));
-    SCOPED_TRACE(seed_message(case_seed(k) + 33));
+    SCOPED_TRACE(seed_message(case_seed(k)));
     LeadWheelController controller(a, path);
     const double measured = random.uniform(-1.0, 1.0) * controller.bounds().steering_angle_rad;
     controller.reset(measured);

@@ -95,7 +95,7 @@ TEST(WorstCase, AgreesWithDenseGridAndChainBounds) {
     const double q = std::sin(random.uniform(0.05, 1.4));
     const ControllerParameters p = ControllerParameters::paper_c1(vehicle, lead, q / vehicle, 0.3);
     std::ostringstream text;
-    text << seed_message(case_seed(k) + 11) << " lambda_veh=" << vehicle << " lambda_l=" << lead
+    text << seed_message(case_seed(k)) << " lambda_veh=" << vehicle << " lambda_l=" << lead
          << " kbar_l=" << p.lead_curvature_bound;
     SCOPED_TRACE(text.str());
     const SteeringDerivatives worst = worst_case_steering_derivatives(p);
@@ -132,7 +132,7 @@ TEST(StaticMap, NeverExceededByStatesInTheInvariantSets) {
     const ControllerParameters p =
         ControllerParameters::paper_c1(vehicle, lead, std::sin(angle) / vehicle, 0.3);
     std::ostringstream text;
-    text << seed_message(case_seed(k) + 3) << " lambda_veh=" << vehicle << " lambda_l=" << lead
+    text << seed_message(case_seed(k)) << " lambda_veh=" << vehicle << " lambda_l=" << lead
          << " kbar_l=" << p.lead_curvature_bound;
     SCOPED_TRACE(text.str());
     const MapValue bound = map.lookup(vehicle, lead, p.lead_curvature_bound);
