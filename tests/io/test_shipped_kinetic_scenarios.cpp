@@ -1,0 +1,110 @@
+// The shipped kinetic scenarios at the car's own actuator (0.4 rad/s) hold the figures that
+// docs/vehicle_dynamics.md section 7 reports: no held sample of the command above the vehicle
+// file's limits, no spin, and the rear axle's error below a pinned bound. The bounds are the
+// issue's targets where the file meets them and the reported figure plus a small margin where it
+// does not yet (lane_change_15, circle_sections), so that a change that makes a figure worse
+// fails here. The observer's stiffness and mass off by +-20 % must degrade gracefully: within a
+// pinned bound at most about twice the nominal one, still without spin or a held sample above
+// the limits.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "smoothsteer/io/controller_registry.hpp"
+#include "smoothsteer/io/scenario.hpp"
+
+namespace smoothsteer::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path source_dir() {
+  const char* env = std::getenv("SMOOTHSTEER_SOURCE_DIR");
+  return env ? fs::path(env) : fs::path(".");
+}
+
+struct ShippedCase {
+  std::string file;
+  double settle_time_s;     //!< the error is measured from here on (the start offset settles)
+  double max_rear_error_m;  //!< pinned bound on the rear axle's |e|
+  double max_rear_error_observer_off_m;  //!< the same with the observer's parameters off 20 %
+};
+
+// lane_change_19: the 0.25 m (reported 0.233 m). lane_change_15: reported 0.031 m
+// against the 0.03 m. circle_sections: reported 0.097 m after 8 s against 0.05 m. With
+// the observer off by 20 % docs/vehicle_dynamics.md reports 0.031-0.043 / 0.056-0.074 /
+// 0.266-0.281 / 0.147-0.171 m.
+const std::vector<ShippedCase> shipped_cases = {
+    {"lane_change_10.yaml", 0.0, 0.03, 0.05},
+    {"lane_change_15.yaml", 0.0, 0.033, 0.08},
+    {"lane_change_19.yaml", 0.0, 0.25, 0.30},
+    {"circle_sections.yaml", 8.0, 0.10, 0.19},
+};
+
+struct RunFigures {
+  double max_rear_error_m = 0.0;
+  double max_abs_heading_error_rad = 0.0;
+  int held_samples_above_limits = 0;
+};
+
+RunFigures run_figures(const ShippedCase& shipped, const std::vector<std::string>& overrides) {
+  const Scenario scenario =
+      load_scenario((source_dir() / "scenarios" / shipped.file).string(), overrides);
+  const RunResult result = run_scenario(scenario);
+  EXPECT_EQ(result.simulation.status, Status::ok);
+  EXPECT_EQ(result.metrics.non_finite_values, 0);
+  RunFigures figures;
+  for (const auto& sample : result.simulation.trace) {
+    figures.max_abs_heading_error_rad =
+        std::max(figures.max_abs_heading_error_rad, std::abs(sample.heading_error_rad));
+    if (sample.time_s >= shipped.settle_time_s) {
+      figures.max_rear_error_m =
+          std::max(figures.max_rear_error_m, std::abs(sample.lateral_error_m));
+    }
+  }
+  figures.held_samples_above_limits = result.metrics.held_rate_violations +
+                                      result.metrics.held_acceleration_violations +
+                                      result.metrics.angle_violations;
+  // The scenario's limits are the vehicle file's: the 0.4 rad/s actuator, not a faster demo one.
+  EXPECT_NEAR(scenario.metrics.steering_rate_limit_radps, 0.4, 1e-12);
+  return figures;
+}
+
+// A spin shows as a heading error far beyond any tracking transient.
+constexpr double spin_heading_error_rad = 1.0;
+
+TEST(ShippedKineticScenarios, MeetTheirPinnedFiguresAtTheCarsActuator) {
+  for (const ShippedCase& shipped : shipped_cases) {
+    SCOPED_TRACE(shipped.file);
+    const RunFigures figures = run_figures(shipped, {});
+    EXPECT_EQ(figures.held_samples_above_limits, 0);
+    EXPECT_LT(figures.max_abs_heading_error_rad, spin_heading_error_rad);
+    EXPECT_LE(figures.max_rear_error_m, shipped.max_rear_error_m);
+  }
+}
+
+TEST(ShippedKineticScenarios, DegradeGracefullyWithTheObserverOffByTwentyPercent) {
+  const std::vector<std::string> variants = {
+      "simulation.side_slip.cornering_stiffness_scale=0.8",
+      "simulation.side_slip.cornering_stiffness_scale=1.2",
+      "simulation.side_slip.mass_scale=0.8",
+      "simulation.side_slip.mass_scale=1.2",
+  };
+  for (const ShippedCase& shipped : shipped_cases) {
+    for (const std::string& variant : variants) {
+      SCOPED_TRACE(shipped.file + " with " + variant);
+      const RunFigures figures = run_figures(shipped, {variant});
+      EXPECT_EQ(figures.held_samples_above_limits, 0);
+      EXPECT_LT(figures.max_abs_heading_error_rad, spin_heading_error_rad);
+      EXPECT_LE(figures.max_rear_error_m, shipped.max_rear_error_observer_off_m);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer::io
