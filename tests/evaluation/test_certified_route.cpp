@@ -12,14 +12,12 @@
 #include "smoothsteer/evaluation/certified_route.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
+#include "support/source_dir.hpp"
 
 namespace smoothsteer {
 namespace {
 
-std::string source_file(const std::string& relative) {
-  const char* dir = std::getenv("SMOOTHSTEER_SOURCE_DIR");
-  return std::string(dir ? dir : ".") + "/" + relative;
-}
+using testing::source_file;
 
 TEST(CertifiedRoute, ReproducesTheCommittedCircleSectionsSchedule) {
   // scenarios/circle_sections.yaml: tune --speeds 0.5:13:0.5 --max-longitudinal-acceleration 0.5

@@ -9,14 +9,12 @@
 #include <string>
 
 #include "smoothsteer/evaluation/paper_figures.hpp"
+#include "support/source_dir.hpp"
 
 namespace smoothsteer {
 namespace {
 
-std::string source_dir() {
-  const char* dir = std::getenv("SMOOTHSTEER_SOURCE_DIR");
-  return dir ? dir : ".";
-}
+using testing::source_file;
 
 std::string write_temporary(const std::string& content) {
   const std::string file =
@@ -26,7 +24,7 @@ std::string write_temporary(const std::string& content) {
 }
 
 TEST(PaperFigures, TheRepositoryFileHasTheTablesFigures) {
-  const PaperFigures figures = PaperFigures::load(source_dir() + "/data/paper_figures.csv");
+  const PaperFigures figures = PaperFigures::load(source_file("data/paper_figures.csv"));
   EXPECT_EQ(figures.size(), 12u);
   EXPECT_DOUBLE_EQ(*figures.find("roc_vx", "-0.6283", "hosm_m"), 3.00);
   EXPECT_DOUBLE_EQ(*figures.find("lane_change", "15.0", "proposed_max_e_m"), 0.39);

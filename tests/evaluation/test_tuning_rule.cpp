@@ -10,13 +10,13 @@
 #include "smoothsteer/evaluation/certified_route.hpp"
 #include "smoothsteer/evaluation/controller_registration.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
+#include "support/source_dir.hpp"
 
 namespace smoothsteer {
 namespace {
 
 std::string scenario_file(const std::string& name) {
-  const char* dir = std::getenv("SMOOTHSTEER_SOURCE_DIR");
-  return std::string(dir ? dir : ".") + "/scenarios/" + name + ".yaml";
+  return testing::source_file("scenarios/" + name + ".yaml");
 }
 
 TEST(TuningRule, EveryGridHasExactlyTheBudget) {

@@ -12,16 +12,14 @@
 #include "smoothsteer/io/run_output.hpp"
 #include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/sweep.hpp"
+#include "support/source_dir.hpp"
 
 namespace smoothsteer::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path source_dir() {
-  const char* env = std::getenv("SMOOTHSTEER_SOURCE_DIR");
-  return env ? fs::path(env) : fs::path(".");
-}
+using testing::source_dir;
 
 std::vector<fs::path> scenario_files() {
   std::vector<fs::path> files;

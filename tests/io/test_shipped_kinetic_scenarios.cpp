@@ -17,16 +17,12 @@
 
 #include "smoothsteer/io/controller_registry.hpp"
 #include "smoothsteer/io/scenario.hpp"
+#include "support/source_dir.hpp"
 
 namespace smoothsteer::io {
 namespace {
 
-namespace fs = std::filesystem;
-
-fs::path source_dir() {
-  const char* env = std::getenv("SMOOTHSTEER_SOURCE_DIR");
-  return env ? fs::path(env) : fs::path(".");
-}
+using testing::source_dir;
 
 struct ShippedCase {
   std::string file;

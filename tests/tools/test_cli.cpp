@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/source_dir.hpp"
 #include "tools/cli_process.hpp"
 
 namespace smoothsteer::testing {
@@ -27,11 +28,6 @@ namespace fs = std::filesystem;
 #define SMOOTHSTEER_CLI ""
 #define SMOOTHSTEER_DEMO ""
 #endif
-
-fs::path source_dir() {
-  const char* env = std::getenv("SMOOTHSTEER_SOURCE_DIR");
-  return env ? fs::path(env) : fs::current_path();
-}
 
 std::string scenario(const std::string& name) {
   return (source_dir() / "scenarios" / name).string();
