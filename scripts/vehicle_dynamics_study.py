@@ -61,10 +61,33 @@ def run(cli, scenario, overrides):
             "slip": m["max_abs_side_slip_rad"], "slip_error": m["max_abs_rear_slip_input_error_rad"], "spin": spin}
 
 
+def print_seed_spread(cli, seeds):
+    """The shipped files' max |e| over the sensor-noise seeds 1..seeds (the files' own seed is one
+    draw of the pose and slip-sensor noise), and how many seeds meet issue 8's and issue 10's
+    targets."""
+    targets = {"lane_change_10": (0.03, None), "lane_change_15": (0.05, 0.03),
+               "lane_change_19": (0.5, 0.25), "circle_sections": (0.10, 0.05)}
+    print("| scenario | min | median | max | seeds within issue 8's / issue 10's target |")
+    print("|---|---|---|---|---|")
+    for scenario in SCENARIOS:
+        errors = sorted(run(cli, scenario, [f"simulation.noise_seed={seed}"])["e"]
+                        for seed in range(1, seeds + 1))
+        median = (errors[(seeds - 1) // 2] + errors[seeds // 2]) / 2
+        met = [f"{sum(e <= target for e in errors)} of {seeds} ({target} m)" if target else "-"
+               for target in targets[scenario]]
+        print(f"| {scenario} | {errors[0]:.4f} m | {median:.4f} m | {errors[-1]:.4f} m | "
+              f"{' / '.join(met)} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cli", default=os.path.join(ROOT, "build", "ci", "apps", "smoothsteer"))
+    parser.add_argument("--seeds", type=int, default=0,
+                        help="instead: the shipped files over noise seeds 1..N (min / median / max)")
     args = parser.parse_args()
+    if args.seeds > 0:
+        print_seed_spread(args.cli, args.seeds)
+        return
     print("| variant | " + " | ".join(SCENARIOS) + " |")
     print("|---|" + "---|" * len(SCENARIOS))
     details = []
