@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev coinor-libipopt-dev libalglib-dev
   libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
-  python3-numpy python3-scipy python3-yaml python3-matplotlib python3-dev python3-pybind11 pybind11-dev python3-pytest
+  python3-numpy python3-scipy python3-matplotlib python3-dev python3-pybind11 pybind11-dev python3-pytest
   clang-14 libclang-rt-14-dev
 )
 

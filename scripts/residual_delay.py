@@ -2,55 +2,44 @@
 """The Smith delay that the linear model asks for (docs/vehicle_dynamics.md, section 7).
 
 The feedforward inverts the linear single-track model (section 3 of that document: preview
-d = (K_f + K_r) v^2 / g, gain g, second-order term c); what it leaves, together with the 10 Hz
-third-order actuator and the zero-order hold of the 20 ms control period, is a lag between the
-curvature the law asks for and the curvature the rear axle runs on. This script computes that lag
-in two ways, from the vehicle file's linear model (cornering stiffness B C mu F_z from the Magic
-Formula coefficients, Rajamani ch. 2-3):
+d = (K_f + K_r) v^2 / g, gain g, second-order term c); what it leaves, together with the
+scenario's third-order actuator and the zero-order hold of its control period, is a lag between
+the curvature the law asks for and the curvature the rear axle runs on. This script computes that
+lag in two ways, from each shipped lane change's resolved parameters (its vehicle, actuator,
+control period, speed and `slip_preview_second_order`; cornering stiffness B C mu F_z from the
+Magic Formula coefficients, Rajamani ch. 2-3):
 
 * the group delay at low frequency, -d arg P(j w) / d w at w -> 0, where
   P = (single-track response) x (its inversion) x (actuator) x (hold);
-* the pure delay that best matches P applied to the curvature each shipped lane change's rear axle
-  meets (least squares over the run, read from the CLI's trace), and, with --run, the files'
-  figures at that delay against their hand-set 0.048 s.
+* the pure delay that best matches P applied to the curvature the rear axle meets in the run
+  (least squares), and, with --run, the file's figure at that delay against its own
+  `actuator_delay_s`.
 
-    /usr/bin/python3 scripts/residual_delay.py [--cli build/ci/apps/smoothsteer] [--run]
+    PYTHONPATH=build/ci/python /usr/bin/python3 scripts/residual_delay.py [--run]
 """
 import argparse
-import csv
-import json
 import math
-import os
-import subprocess
-import tempfile
 
 import numpy as np
-import yaml
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GRAVITY = 9.81
-CONTROL_PERIOD_S = 0.02
-ACTUATOR_BANDWIDTH_HZ = 10.0
-# (scenario, speed [m/s], whether the file keeps the second-order term c)
-LANE_CHANGES = [("lane_change_10", 10.0, True), ("lane_change_15", 15.0, True),
-                ("lane_change_19", 19.0, False)]
+LANE_CHANGES = ["lane_change_10", "lane_change_15", "lane_change_19"]
 
 
 class LinearSingleTrack:
-    """The vehicle file's linear single-track model and the feedforward's inversion of it."""
+    """A vehicle's linear single-track model and the feedforward's inversion of it, from the
+    resolved `vehicle` parameters of a scenario (smoothsteer.load_scenario(...).parameters)."""
 
-    def __init__(self, vehicle_file):
-        car = yaml.safe_load(open(vehicle_file))
-        self.m, self.iz = car["mass_kg"], car["yaw_inertia_kgm2"]
-        self.lf, self.lr = car["cg_to_front_axle_m"], car["cg_to_rear_axle_m"]
+    def __init__(self, vehicle):
+        self.m, self.iz = vehicle["mass_kg"], vehicle["yaw_inertia_kgm2"]
+        self.lf, self.lr = vehicle["cg_to_front_axle_m"], vehicle["cg_to_rear_axle_m"]
         self.wheelbase = self.lf + self.lr
 
         def stiffness(tire, load_share):
             return (tire["stiffness_factor_b"] * tire["shape_factor_c"] * tire["friction_mu"] *
-                    self.m * GRAVITY * load_share)
+                    self.m * vehicle["gravity_mps2"] * load_share)
 
-        self.cf = stiffness(car["front_tire"], self.lr / self.wheelbase)
-        self.cr = stiffness(car["rear_tire"], self.lf / self.wheelbase)
+        self.cf = stiffness(vehicle["front_tire"], self.lr / self.wheelbase)
+        self.cr = stiffness(vehicle["rear_tire"], self.lf / self.wheelbase)
         # Slip gradients, docs/vehicle_dynamics.md section 3.
         self.kf = self.m * self.lr / (self.wheelbase * self.cf)
         self.kr = self.m * self.lf / (self.wheelbase * self.cr)
@@ -73,77 +62,66 @@ class LinearSingleTrack:
                                  (c * s**2 / v**2 if second_order else 0.0))
 
 
-def actuator_pole():
-    """The scenarios' third-order low-pass (src/vehicle/steering_actuator.cpp)."""
-    return 2.0 * math.pi * ACTUATOR_BANDWIDTH_HZ / math.sqrt(2.0 ** (1.0 / 3.0) - 1.0)
+class Loop:
+    """Inversion, hold, actuator and car at one speed: the transfer P of the module docstring."""
 
+    def __init__(self, model, parameters):
+        """parameters: a scenario's resolved parameters (speed, actuator, simulation, controller)."""
+        self.model = model
+        self.speed = parameters["speed"]["initial_mps"]
+        self.second_order = parameters["controller"]["slip_preview_second_order"]
+        self.period = parameters["simulation"]["control_period_s"]
+        # The third-order low-pass of src/vehicle/steering_actuator.cpp.
+        self.pole = (2.0 * math.pi * parameters["actuator"]["bandwidth_hz"] /
+                     math.sqrt(2.0 ** (1.0 / 3.0) - 1.0))
 
-def actuator(s):
-    return (actuator_pole() / (s + actuator_pole())) ** 3
+    def response(self, s):
+        hold = (1.0 - np.exp(-s * self.period)) / (s * self.period)
+        actuator = (self.pole / (s + self.pole)) ** 3
+        return (self.model.curvature_response(s, self.speed) *
+                self.model.inversion(s, self.speed, self.second_order) * actuator * hold)
 
+    def group_delay(self, frequency_hz=0.0, step=1e-4):
+        w = max(2.0 * math.pi * frequency_hz, 2.0 * step)
+        phase = [np.angle(self.response(1j * x)) for x in (w - step, w + step)]
+        return -(phase[1] - phase[0]) / (2.0 * step)
 
-def hold(s):
-    return (1.0 - np.exp(-s * CONTROL_PERIOD_S)) / (s * CONTROL_PERIOD_S)
-
-
-def chain(model, s, v, second_order):
-    """P: path curvature to the rear axle's curvature through inversion, hold, actuator, car."""
-    return (model.curvature_response(s, v) * model.inversion(s, v, second_order) * actuator(s) *
-            hold(s))
-
-
-def group_delay(model, v, second_order, frequency_hz=0.0, step=1e-4):
-    w = max(2.0 * math.pi * frequency_hz, 2.0 * step)
-    phase = [np.angle(chain(model, 1j * x, v, second_order)) for x in (w - step, w + step)]
-    return -(phase[1] - phase[0]) / (2.0 * step)
-
-
-def fitted_delay(model, v, second_order, curvature, dt, delays=np.arange(0.0, 0.1, 0.0005)):
-    """Pure delay that best matches P applied to a sampled curvature signal (least squares)."""
-    n = 4 * len(curvature)
-    spectrum = np.fft.rfft(curvature, n)
-    w = 2.0 * math.pi * np.fft.rfftfreq(n, dt)
-    response = np.array([chain(model, 1j * x, v, second_order) if x > 0 else 1.0 for x in w])
-    response /= abs(chain(model, 1e-6j, v, second_order))
-    errors = [np.sum(abs(spectrum * response - spectrum * np.exp(-1j * w * tau))**2)
-              for tau in delays]
-    return float(delays[int(np.argmin(errors))])
-
-
-def run(cli, scenario, overrides=()):
-    out = tempfile.mkdtemp(prefix="smoothsteer_delay_")
-    args = [cli, "run", os.path.join(ROOT, "scenarios", scenario + ".yaml"), "--out", out]
-    for override in overrides:
-        args += ["--set", override]
-    subprocess.run(args, check=True, capture_output=True)
-    rows = list(csv.DictReader(open(os.path.join(out, "trace.csv"))))
-    metrics = json.load(open(os.path.join(out, "summary.json")))["metrics"]
-    return rows, metrics
+    def fitted_delay(self, curvature, dt, delays=np.arange(0.0, 0.1, 0.0005)):
+        """Pure delay that best matches P applied to a sampled curvature signal (least squares)."""
+        n = 4 * len(curvature)
+        spectrum = np.fft.rfft(curvature, n)
+        w = 2.0 * math.pi * np.fft.rfftfreq(n, dt)
+        response = np.array([self.response(1j * x) if x > 0 else 1.0 for x in w])
+        response /= abs(self.response(1e-6j))
+        errors = [np.sum(abs(spectrum * response - spectrum * np.exp(-1j * w * tau))**2)
+                  for tau in delays]
+        return float(delays[int(np.argmin(errors))])
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--cli", default=os.path.join(ROOT, "build/ci/apps/smoothsteer"))
+    import smoothsteer  # the built module (PYTHONPATH=build/ci/python)
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
     parser.add_argument("--run", action="store_true", help="also run the files at that delay")
     args = parser.parse_args()
-    model = LinearSingleTrack(os.path.join(ROOT, "vehicles/passenger_car.yaml"))
-    print(f"low-frequency delay: {group_delay(model, 15.0, True):.4f} s (actuator "
-          f"{3.0 / actuator_pole():.4f} s + half the control period {CONTROL_PERIOD_S / 2:.4f} s)")
-    print("| scenario | delay at 0.5 / 1 Hz | fitted on the run's curvature | max abs e there | "
-          "at the file's 0.048 s |")
-    print("|---|---|---|---|---|")
-    for scenario, v, second_order in LANE_CHANGES:
-        rows, metrics = run(args.cli, scenario)
-        time = np.array([float(r["t"]) for r in rows])
-        curvature = np.array([float(r["path_kappa"]) for r in rows])
-        delay = fitted_delay(model, v, second_order, curvature, time[1] - time[0])
-        at_frequency = " / ".join(f"{group_delay(model, v, second_order, f):.4f}" for f in (0.5, 1.0))
+    print("| scenario | low-frequency delay (actuator + half the period) | delay at 0.5 / 1 Hz | "
+          "fitted on the run's curvature | max abs e there | at the file's own delay |")
+    print("|---|---|---|---|---|---|")
+    for scenario in LANE_CHANGES:
+        file = f"scenarios/{scenario}.yaml"
+        parameters = smoothsteer.load_scenario(file).parameters
+        loop = Loop(LinearSingleTrack(parameters["vehicle"]), parameters)
+        trace, summary = smoothsteer.run_scenario(file)
+        delay = loop.fitted_delay(trace["path_kappa"], loop.period)
+        low = (f"{loop.group_delay():.4f} s ({3.0 / loop.pole:.4f} + {loop.period / 2:.4f} s)")
+        at_frequency = " / ".join(f"{loop.group_delay(f):.4f}" for f in (0.5, 1.0))
         there = "-"
         if args.run:
-            _, at_delay = run(args.cli, scenario, [f"controller.actuator_delay_s={delay}"])
-            there = f"{at_delay['max_abs_rear_error_m']:.3f} m"
-        print(f"| {scenario} | {at_frequency} s | {delay:.4f} s | {there} | "
-              f"{metrics['max_abs_rear_error_m']:.3f} m |")
+            _, at_delay = smoothsteer.run_scenario(file, [f"controller.actuator_delay_s={delay}"])
+            there = f"{at_delay['metrics']['max_abs_rear_error_m']:.3f} m"
+        own = parameters["controller"]["actuator_delay_s"]
+        print(f"| {scenario} | {low} | {at_frequency} s | {delay:.4f} s | {there} | "
+              f"{summary['metrics']['max_abs_rear_error_m']:.3f} m at {own} s |")
 
 
 if __name__ == "__main__":

@@ -70,8 +70,10 @@ def print_seed_spread(cli, seeds):
     print("| scenario | min | median | max | seeds within issue 8's / issue 10's target |")
     print("|---|---|---|---|---|")
     for scenario in SCENARIOS:
-        errors = sorted(run(cli, scenario, [f"simulation.noise_seed={seed}"])["e"]
-                        for seed in range(1, seeds + 1))
+        runs = [run(cli, scenario, [f"simulation.noise_seed={seed}"]) for seed in range(1, seeds + 1)]
+        if None in runs:
+            raise SystemExit(f"{scenario}: the CLI failed at noise seed {runs.index(None) + 1}")
+        errors = sorted(r["e"] for r in runs)
         median = (errors[(seeds - 1) // 2] + errors[seeds // 2]) / 2
         met = [f"{sum(e <= target for e in errors)} of {seeds} ({target} m)" if target else "-"
                for target in targets[scenario]]

@@ -7,6 +7,7 @@ import random
 
 import numpy as np
 
+import smoothsteer
 from conftest import ROOT, base_seed, property_cases
 
 _spec = importlib.util.spec_from_file_location("residual_delay",
@@ -14,10 +15,19 @@ _spec = importlib.util.spec_from_file_location("residual_delay",
 delay = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(delay)
 
+PARAMETERS = smoothsteer.load_scenario(str(ROOT / "scenarios" / "lane_change_15.yaml")).parameters
+
+
+def loop_at(speed, second_order):
+    """lane_change_15's loop (its car, actuator and control period) at another speed."""
+    parameters = dict(PARAMETERS, speed={"initial_mps": speed},
+                      controller={"slip_preview_second_order": second_order})
+    return delay.Loop(delay.LinearSingleTrack(PARAMETERS["vehicle"]), parameters)
+
 
 def model_with_point_masses():
     """The shipped car with Iz = m lf lr, where section 3's two-mass split is exact."""
-    model = delay.LinearSingleTrack(ROOT / "vehicles" / "passenger_car.yaml")
+    model = delay.LinearSingleTrack(PARAMETERS["vehicle"])
     model.iz = model.m * model.lf * model.lr
     return model
 
@@ -44,18 +54,17 @@ def test_the_inversion_is_exact_to_second_order_in_frequency():
 
 def test_the_low_frequency_delay_is_the_actuator_plus_half_the_hold():
     rng = random.Random(base_seed() + 1)
-    model = delay.LinearSingleTrack(ROOT / "vehicles" / "passenger_car.yaml")
-    expected = 3.0 / delay.actuator_pole() + delay.CONTROL_PERIOD_S / 2.0
+    bandwidth = PARAMETERS["actuator"]["bandwidth_hz"]
+    pole = 2.0 * math.pi * bandwidth / math.sqrt(2.0 ** (1.0 / 3.0) - 1.0)
+    expected = 3.0 / pole + PARAMETERS["simulation"]["control_period_s"] / 2.0
     for case in range(property_cases()):
         v = rng.uniform(3.0, 25.0)
-        measured = delay.group_delay(model, v, rng.random() < 0.5)
+        measured = loop_at(v, rng.random() < 0.5).group_delay()
         assert abs(measured - expected) < 5e-4, f"seed {base_seed() + 1} case {case}: v = {v}"
 
 
 def test_the_fitted_delay_of_a_slow_signal_is_the_low_frequency_delay():
-    model = delay.LinearSingleTrack(ROOT / "vehicles" / "passenger_car.yaml")
-    dt = 0.02
-    time = np.arange(0.0, 60.0, dt)
+    loop = loop_at(15.0, True)
+    time = np.arange(0.0, 60.0, loop.period)
     slow = 0.01 * np.exp(-((time - 30.0) / 6.0) ** 2)
-    fitted = delay.fitted_delay(model, 15.0, True, slow, dt)
-    assert abs(fitted - delay.group_delay(model, 15.0, True)) < 1e-3
+    assert abs(loop.fitted_delay(slow, loop.period) - loop.group_delay()) < 1e-3
