@@ -44,6 +44,7 @@ from ._smoothsteer import (  # noqa: F401
     Status,
     SteeringCertificate,
     SteeringController,
+    SteeringGovernor,
     TrackingDiagnostics,
     TuningOptions,
     VehicleLimits,

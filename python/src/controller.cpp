@@ -67,6 +67,30 @@ void bind_controller(py::module_& m) {
              "the rear axle on the path also while the curvature changes (the chain's inverse)")
       .value("lead_wheel", CorneringTarget::lead_wheel, "the lead wheel on the path (paper)");
 
+  using G = SteeringGovernor;
+  py::class_<G>(m, "SteeringGovernor",
+                "The car's rate and acceleration limits held on the command inside the control "
+                "step (docs/governor.md); keyword arguments set any field.")
+      .def(py::init([](const py::kwargs& keywords) {
+        py::object governor = py::cast(G{});
+        set_attributes(governor, keywords);
+        return governor.cast<G>();
+      }))
+      .def_readwrite("enabled", &G::enabled)
+      .def_readwrite("max_steering_rate_radps", &G::max_steering_rate_radps, "R [rad/s]")
+      .def_readwrite("max_steering_acceleration_radps2", &G::max_steering_acceleration_radps2,
+                     "A [rad/s^2]")
+      .def_readwrite("max_longitudinal_acceleration_mps2", &G::max_longitudinal_acceleration_mps2,
+                     "|dv/dt| budgeted beyond the measured one [m/s^2]")
+      .def_readwrite("law_length_m", &G::law_length_m, "l [m]; 0 = derived")
+      .def_readwrite("margin", &G::margin, "share of R and A kept in reserve")
+      .def_readwrite("max_steering_angle_rad", &G::max_steering_angle_rad,
+                     "angle limit the authority is derived from [rad]")
+      .def_readwrite("max_lateral_acceleration_mps2", &G::max_lateral_acceleration_mps2,
+                     "friction limit mu g the authority is derived from [m/s^2]")
+      .def_readwrite("certified_switching_bound", &G::certified_switching_bound,
+                     "the near-path law's authority [1/m]; 0 = kbar_sw");
+
   using P = ControllerParameters;
   py::class_<P>(m, "ControllerParameters",
                 "Parameters of the lead-wheel controller, SI units; keyword arguments set any "
@@ -95,6 +119,7 @@ void bind_controller(py::module_& m) {
       .def_readwrite("curvature_preview", &P::curvature_preview)
       .def_readwrite("max_substep_fraction", &P::max_substep_fraction)
       .def_readwrite("max_substeps", &P::max_substeps)
+      .def_readwrite("governor", &P::governor, "SteeringGovernor (docs/governor.md)")
       .def("validate", &P::validate, "Raises ValueError naming the field, value and rule.")
       .def_static("paper_c1", &P::paper_c1, py::arg("vehicle_wheelbase_m"),
                   py::arg("lead_wheelbase_m"), py::arg("lead_curvature_bound"), py::arg("k_rob"),

@@ -137,6 +137,39 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
   if (p.max_substeps < 1 || p.max_substeps > 10000) {
     return fail(text("max_substeps"), p.max_substeps, text("must be in [1, 10000]"));
   }
+  if (p.governor.enabled) {
+    const SteeringGovernor& g = p.governor;
+    if (p.order < 1 || p.order > 2) {
+      return fail(text("governor.enabled"), p.order,
+                  text("the governor needs order 1 or 2 (the command's acceleration, resp. "
+                       "rate, is affine in the lead curvature only there)"));
+    }
+    if (!finite_positive(g.max_steering_rate_radps)) {
+      return fail(text("governor.max_steering_rate_radps"), g.max_steering_rate_radps,
+                  text("must be finite and > 0"));
+    }
+    if (!finite_positive(g.max_steering_acceleration_radps2)) {
+      return fail(text("governor.max_steering_acceleration_radps2"),
+                  g.max_steering_acceleration_radps2, text("must be finite and > 0"));
+    }
+    if (!std::isfinite(g.max_longitudinal_acceleration_mps2) ||
+        g.max_longitudinal_acceleration_mps2 < 0.0 || g.max_longitudinal_acceleration_mps2 > 50.0) {
+      return fail(text("governor.max_longitudinal_acceleration_mps2"),
+                  g.max_longitudinal_acceleration_mps2, text("must be in [0, 50] m/s^2"));
+    }
+    if (!std::isfinite(g.law_length_m) || g.law_length_m < 0.0 || g.law_length_m > 1000.0) {
+      return fail(text("governor.law_length_m"), g.law_length_m,
+                  text("must be 0 (keep boundary_layer) or in (0, 1000] m"));
+    }
+    if (!std::isfinite(g.margin) || g.margin < 0.0 || g.margin >= 0.5) {
+      return fail(text("governor.margin"), g.margin, text("must be in [0, 0.5)"));
+    }
+    if (p.actuator_time_constant_s > 0.0) {
+      return fail(text("actuator_time_constant_s"), p.actuator_time_constant_s,
+                  text("must be 0 with the governor (it bounds the chain's command, not the "
+                       "actuator-inverted one)"));
+    }
+  }
   // Invariant sets down the chain (paper_notes §2): kbar_i lambda_i < 1 for every wheel.
   double kbar = p.lead_curvature_bound;
   for (int i = p.order; i >= 1; --i) {

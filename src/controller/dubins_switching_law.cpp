@@ -25,6 +25,13 @@ double global_reference_heading(double lateral_error, double curvature_bound, do
 SwitchingResult dubins_switching_law(double lateral_error, double relative_heading,
                                      double curvature_bound,
                                      const ControllerParameters& parameters) noexcept {
+  return dubins_switching_law(lateral_error, relative_heading, curvature_bound,
+                              parameters.boundary_layer, parameters);
+}
+
+SwitchingResult dubins_switching_law(double lateral_error, double relative_heading,
+                                     double curvature_bound, double boundary_layer,
+                                     const ControllerParameters& parameters) noexcept {
   SwitchingResult result;
   if (parameters.surface == SlidingSurface::paper) {
     result.sliding_variable =
@@ -32,18 +39,18 @@ SwitchingResult dubins_switching_law(double lateral_error, double relative_headi
   } else {
     double reference = global_reference_heading(lateral_error, curvature_bound, parameters.k_rob,
                                                 parameters.approach_angle_rad);
-    if (parameters.boundary_layer > 0.0) {
+    if (boundary_layer > 0.0) {
       // Near the path the finite-time curve psi ~ -sign(e) sqrt(2 k |e|) has infinite slope; a
       // linear zone psi_ref = -e / l with l = 4 epsilon / kbar (four heading time constants of
       // the boundary layer) makes the approach exponential there and the loop smooth.
-      const double linear = -lateral_error * curvature_bound / (4.0 * parameters.boundary_layer);
+      const double linear = -lateral_error * curvature_bound / (4.0 * boundary_layer);
       if (std::abs(linear) < std::abs(reference)) reference = linear;
     }
     result.sliding_variable = wrap_angle(reference - relative_heading);
   }
-  if (parameters.boundary_layer > 0.0) {
-    result.curvature = curvature_bound *
-                       std::clamp(result.sliding_variable / parameters.boundary_layer, -1.0, 1.0);
+  if (boundary_layer > 0.0) {
+    result.curvature =
+        curvature_bound * std::clamp(result.sliding_variable / boundary_layer, -1.0, 1.0);
   } else {
     result.curvature = curvature_bound * sign(result.sliding_variable);  // eq. (cntrllaw)
   }

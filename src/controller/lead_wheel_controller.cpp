@@ -8,6 +8,7 @@
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/feedforward.hpp"
 #include "smoothsteer/controller/jump_plan.hpp"
+#include "smoothsteer/controller/steering_governor.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
@@ -95,6 +96,9 @@ void LeadWheelController::initialise_chain_on_feedforward(double feedforward_cur
     angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
   }
   last_steering_angle_ = vehicle_steering_angle_of_chain();
+  governor_rate_ = 0.0;  // stationary cornering
+  feedforward_envelope_ = std::abs(feedforward_curvature_);
+  far_share_ = 0.0;
 }
 
 Status LeadWheelController::retune(const ControllerParameters& parameters) noexcept {
@@ -136,6 +140,7 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
 void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   direction_ = 1.0;
   has_previous_pose_ = false;
+  previous_speed_ = -1.0;
   disturbance_estimate_ = 0.0;
   command_history_count_ = 0;
   command_history_next_ = 0;
@@ -222,7 +227,8 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
 }
 
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
-    Vec2 rear_position, double rear_travel_heading, bool refresh_target) noexcept {
+    Vec2 rear_position, double rear_travel_heading, bool refresh_target, double switching_bound,
+    double boundary_layer) noexcept {
   // Lead-wheel state from projecting its own position (paper Sec. II end, paper_notes §6).
   const int n = parameters_.order;
   ChainGeometry geometry;
@@ -238,12 +244,13 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
   const double path_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
   const double error = state.projection.lateral_error_m - target_.offset;
   state.relative_heading = wrap_angle(path_heading - target_.heading);
+  state.lateral_error = error;
   // The plant adds kappa_d to every curvature of the chain: the lead wheel asks that much less.
   state.feedforward_target =
       frenet_feedforward_curvature(target_.curvature, error, state.relative_heading) -
       disturbance_estimate_;
-  state.law = dubins_switching_law(error, state.relative_heading,
-                                   parameters_.switching_curvature_bound(), parameters_);
+  state.law = dubins_switching_law(error, state.relative_heading, switching_bound, boundary_layer,
+                                   parameters_);
   return state;
 }
 
@@ -349,9 +356,65 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   const double switching_bound = parameters_.switching_curvature_bound();
   const double feedforward_step =
       step_length > 0.0 ? parameters_.feedforward_curvature_rate * step_length : 0.0;
-  const double catch_up = parameters_.feedforward_catch_up * switching_bound;
+  // The governor (steering_governor.hpp) holds the car's limits itself, so the split follows the
+  // feedforward along s: the switching part gets what kappa_ff leaves of kbar_n, and with
+  // law_length_m its boundary layer scales with it (epsilon = l kbar_sw / 2), which keeps the
+  // law's linear zone kappa_sw = -e / l^2 - 2 psi / l whatever the authority.
+  const SteeringGovernor& governor = parameters_.governor;
+  const bool governed = governor.enabled && n > 0 && step_length > 0.0;
+  GovernorStep governor_step;
+  if (governed) {
+    const double period_speed_change =
+        previous_speed_ >= 0.0 ? std::abs(speed_magnitude - previous_speed_) / input.period_s : 0.0;
+    governor_step = {.speed_magnitude = speed_magnitude,
+                     .longitudinal_acceleration =
+                         std::max({std::abs(input.acceleration_mps2), period_speed_change,
+                                   governor.max_longitudinal_acceleration_mps2}),
+                     .duration_s = step_length / speed_magnitude,
+                     .previous_rate_radps = governor_rate_};
+  }
+  previous_speed_ = speed_magnitude;
+  const double far_law_reversal_bound =
+      governed ? governed_reversal_curvature(parameters_, speed_magnitude) : 0.0;
+  // The near-path law's authority: the certified kbar_sw (governed_parameters() keeps it).
+  const double near_bound = governor.certified_switching_bound > 0.0
+                                ? std::min(governor.certified_switching_bound, switching_bound)
+                                : switching_bound;
   for (int step = 0; step < steps; ++step) {
-    const LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0);
+    // The far law's authority is what the feedforward's recent demand leaves of kbar_n: an
+    // envelope of |kappa_ff| that forgets over SteeringGovernor::demand_memory_m, so that a
+    // reversal of the path's curvature does not hand the law the friction the car still uses.
+    if (governed) {
+      feedforward_envelope_ =
+          std::max(std::abs(feedforward_curvature_),
+                   feedforward_envelope_ - parameters_.lead_curvature_bound * step_length /
+                                               SteeringGovernor::demand_memory_m);
+    }
+    const double law_bound =
+        governed ? std::max(std::min(parameters_.lead_curvature_bound - feedforward_envelope_,
+                                     far_law_reversal_bound),
+                            near_bound)
+                 : switching_bound;
+    const double law_layer = governed && governor.law_length_m > 0.0
+                                 ? 0.5 * governor.law_length_m * law_bound
+                                 : parameters_.boundary_layer;
+    const double catch_up = parameters_.feedforward_catch_up * law_bound;
+    LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0, law_bound, law_layer);
+    if (governed) {
+      // Near the path the certified law steers (its authority and boundary layer, as the split
+      // certificate tuned them). The decisive far law takes over as the certified law's sliding
+      // variable leaves its boundary layer, fully at twice its width, and keeps the lead until
+      // the error is gone: its share decays over SteeringGovernor::far_law_memory_m, so that the
+      // slow near-path surface does not finish an engagement (docs/governor.md).
+      const double layer = parameters_.boundary_layer;
+      const SwitchingResult near = dubins_switching_law(lead.lateral_error, lead.relative_heading,
+                                                        near_bound, layer, parameters_);
+      const double wanted =
+          layer > 0.0 ? std::clamp(std::abs(near.sliding_variable) / layer - 1.0, 0.0, 1.0) : 1.0;
+      far_share_ = std::max(wanted, far_share_ - step_length / SteeringGovernor::far_law_memory_m);
+      const double far_share = far_share_;
+      lead.law.curvature = far_share * lead.law.curvature + (1.0 - far_share) * near.curvature;
+    }
     if (step == 0) first = lead;
     // kappa_ff moves towards its target by at most L_ff per metre, linearly within the sub-step,
     // and stays within +-kbar_ff (the split the certificate assumes).
@@ -364,24 +427,42 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     // limit still holds kappa_ff back from its target, faded out as the law saturates, so that
     // |kappa_sw| <= kbar_sw and a saturated law keeps its full authority.
     const double law = lead.law.curvature;
-    const double fade =
-        switching_bound > 0.0 ? 1.0 - std::min(1.0, std::abs(law) / switching_bound) : 0.0;
+    const double fade = law_bound > 0.0 ? 1.0 - std::min(1.0, std::abs(law) / law_bound) : 0.0;
     double switching = law +
                        fade * std::clamp(wanted - feedforward_curvature_, -catch_up, catch_up) +
                        matched_disturbance_;
     if (guard < parameters_.lead_curvature_bound) {
       // |kappa_ff + kappa_sw| <= guard where kappa_sw can reach it; while kappa_ff still ramps
       // down into the guard, kappa_sw pulls with its full authority.
-      const double low = std::max(-guard - feedforward_curvature_, -switching_bound);
-      const double high = std::min(guard - feedforward_curvature_, switching_bound);
+      const double low = std::max(-guard - feedforward_curvature_, -law_bound);
+      const double high = std::min(guard - feedforward_curvature_, law_bound);
       switching = low <= high ? std::clamp(switching, low, high)
-                              : (feedforward_curvature_ > 0.0 ? -switching_bound : switching_bound);
+                              : (feedforward_curvature_ > 0.0 ? -law_bound : law_bound);
     }
     applied_curvature = feedforward_curvature_ + switching;
     if (n == 0 || step_length <= 0.0) break;
+    double start_curvature = feedforward_start + switching;
+    if (governed) {
+      // Eq. (governor_interval), inside |kappa_n| <= kbar_n (the invariant sets come first: the
+      // angle limit is the car's too). kappa_n is held over the sub-step, as the interval assumes.
+      const CurvatureInterval allowed =
+          governed_lead_curvature_interval(angles_, parameters_, direction_, governor_step);
+      const double bound = parameters_.lead_curvature_bound;
+      const double low = std::max(allowed.low, -bound);
+      const double high = std::min(allowed.high, bound);
+      applied_curvature = low <= high ? std::clamp(applied_curvature, low, high)
+                                      : (allowed.high < -bound ? -bound : bound);
+      start_curvature = applied_curvature;
+    }
     const double front_before = angles_[0];
-    integrate_chain(angles_, wheelbases, n, feedforward_start + switching, applied_curvature,
-                    step_length, bounds_.angle);
+    integrate_chain(angles_, wheelbases, n, start_curvature, applied_curvature, step_length,
+                    bounds_.angle);
+    if (governed) {
+      governor_step.previous_rate_radps =
+          steering_derivatives(angles_, parameters_, direction_, speed_magnitude, 0.0,
+                               applied_curvature)
+              .rate_radps;
+    }
     // Rear-axle prediction along an arc of the mean chain curvature over the sub-step.
     const double curvature = 0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0];
     const double half_turn = 0.5 * curvature * step_length;
@@ -389,6 +470,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     heading += 2.0 * half_turn;
   }
   const SwitchingResult& law = first.law;
+  if (governed) governor_rate_ = governor_step.previous_rate_radps;
 
   // Output: delta_veh and its time derivatives (d/dt = v d/ds, d2/dt2 = v^2 d2/ds2 + a d/ds).
   double steering = 0.0, rate = 0.0, acceleration = 0.0;
@@ -396,22 +478,13 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   if (n == 0) {
     steering = direction_ * std::atan(parameters_.vehicle_wheelbase_m * applied_curvature);
   } else {
-    const double ratio = parameters_.vehicle_wheelbase_m / wheelbases[0];
-    const double front = angles_[0];
-    const double gain = vehicle_angle_gain(front, ratio);  // d delta_veh / d delta_1
-    const double curvature_of_gain = vehicle_angle_gain_slope(front, ratio);
-    const FrontAngleDerivatives d =
-        front_angle_derivatives(angles_, wheelbases, n, applied_curvature);
-    const double front_rate = speed_magnitude * d.first;
-    const double front_acceleration = speed_magnitude * speed_magnitude * d.second +
-                                      direction_ * input.acceleration_mps2 * d.first;
-    steering = vehicle_steering_angle(front);
-    rate = direction_ * gain * front_rate;
+    const CommandDerivatives d =
+        steering_derivatives(angles_, parameters_, direction_, speed_magnitude,
+                             input.acceleration_mps2, applied_curvature);
+    steering = vehicle_steering_angle(angles_[0]);
+    rate = d.rate_radps;
+    acceleration = d.acceleration_radps2;
     derivatives = n >= 2 ? 2 : 1;
-    if (n >= 2) {
-      acceleration =
-          direction_ * (curvature_of_gain * front_rate * front_rate + gain * front_acceleration);
-    }
   }
   if (!finite(steering) || !finite(rate) || !finite(acceleration)) {
     initialise_chain(last_steering_angle_);

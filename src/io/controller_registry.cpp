@@ -83,6 +83,27 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
                                {"centred_ramp", "planned_jumps"}) == "planned_jumps"
                             ? CurvaturePreview::planned_jumps
                             : CurvaturePreview::centred_ramp;
+  // The steering governor (docs/governor.md) holds the vehicle file's rate and acceleration
+  // limits on the held command and draws its authority from its angle and friction limits.
+  ConfigSection governor = c.section("governor");
+  SteeringGovernor& g = p.governor;
+  g.enabled = governor.boolean("enabled", defaults.governor.enabled);
+  g.law_length_m = governor.number("law_length_m", defaults.governor.law_length_m, {0.0, 1000.0});
+  g.max_longitudinal_acceleration_mps2 =
+      governor.number("max_longitudinal_acceleration_mps2",
+                      defaults.governor.max_longitudinal_acceleration_mps2, {0.0, 50.0});
+  g.margin = governor.number("margin", defaults.governor.margin, {0.0, 0.5, true, false});
+  if (g.enabled) {
+    g.max_steering_rate_radps = vehicle.max_steering_rate_radps;
+    g.max_steering_acceleration_radps2 = vehicle.max_steering_acceleration_radps2;
+    g.max_steering_angle_rad = vehicle.max_steering_angle_rad;
+    g.max_lateral_acceleration_mps2 = vehicle.friction_limit_mps2();
+    if (!std::isfinite(g.max_steering_acceleration_radps2)) {
+      governor.fail("enabled", "needs the vehicle file's max_steering_acceleration_radps2");
+    }
+  }
+  governor.finish();
+  c.store("governor", governor.resolved());
   p.max_substep_fraction =
       c.number("max_substep_fraction", defaults.max_substep_fraction, {0.0, 1.0, true, false});
   p.max_substeps = c.integer("max_substeps", defaults.max_substeps, 1, 10000);

@@ -1,5 +1,7 @@
 #include "smoothsteer/tuning/gain_schedule.hpp"
 
+#include "smoothsteer/controller/steering_governor.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -291,7 +293,9 @@ ControllerParameters GainSchedule::parameters_at(double speed_mps) const noexcep
   }
   const ScheduleEntry& a = entries_[k];
   const ScheduleEntry& b = entries_[std::min(k + 1, last)];
-  return schedule_entry_parameters(options_, vehicle_.wheelbase_m, blend_entries(a, b, t));
+  const ControllerParameters certified =
+      schedule_entry_parameters(options_, vehicle_.wheelbase_m, blend_entries(a, b, t));
+  return governed_parameters(certified, speed);  // unchanged unless base.governor.enabled
 }
 
 std::vector<double> speed_grid(double first_mps, double last_mps, double step_mps) {

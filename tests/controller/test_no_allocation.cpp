@@ -26,6 +26,12 @@ TEST(RealTime, UpdateDoesNotAllocate) {
     parameters.lead_curvature_bound = 0.05;
     parameters.actuator_delay_s = order % 2 == 1 ? 0.3 : 0.0;  // covers the delay prediction
     if (order % 2 == 0) parameters.feedforward_curvature_rate = 0.01;  // and the preview
+    if (order == 1 || order == 2) {                                    // and the steering governor
+      parameters.governor.enabled = true;
+      parameters.governor.max_steering_rate_radps = 0.4;
+      parameters.governor.max_steering_acceleration_radps2 = 8.0;
+      parameters.governor.law_length_m = 4.0;
+    }
     LeadWheelController controller(parameters, path);
     ControllerOutput output;
     Vec2 position{5.0, 30.0};

@@ -50,6 +50,41 @@ enum class CurvaturePreview {
   planned_jumps,
 };
 
+//! The steering governor (docs/governor.md): the car's rate and acceleration limits enforced on
+//! the held command inside the control step, by choosing the lead curvature from the interval
+//! that keeps them (eq. governor_interval), instead of certifying the worst case of the box for
+//! a small switching authority. With it the law may use the whole authority the angle and
+//! friction limits leave (kbar_n), split between feedforward and switching part along s.
+struct SteeringGovernor {
+  bool enabled = false;
+  double max_steering_rate_radps = std::numeric_limits<double>::infinity();  //!< R [rad/s]
+  //! A [rad/s^2]; for order 1 it bounds the change of the rate between sub-steps.
+  double max_steering_acceleration_radps2 = std::numeric_limits<double>::infinity();
+  //! |dv/dt| [m/s^2] the bound budgets for beyond the measured one (the speed changes between
+  //! two control periods enter the held command's second difference as |dv/dt| |rate| / v).
+  double max_longitudinal_acceleration_mps2 = 0.0;
+  //! l [m]: length scale of the law near the path. The boundary layer becomes
+  //! epsilon = l kbar_sw / 2, so that the law's linear zone is the critically damped
+  //! kappa_sw = -e / l^2 - 2 psi / l whatever the authority kbar_sw (docs/governor.md).
+  //! 0 = keep boundary_layer.
+  double law_length_m = 0.0;
+  //! Share of R and A kept in reserve for the variation of the chain within a sub-step.
+  double margin = 0.02;
+  //! How far [m] the far law's authority remembers the feedforward's demand (an envelope of
+  //! |kappa_ff| that decays by kbar_n over this distance).
+  static constexpr double demand_memory_m = 60.0;
+  //! How far [m] the far law keeps the lead once an error called it (its share decays by 1 over
+  //! this distance).
+  static constexpr double far_law_memory_m = 50.0;
+  //! What governed_parameters() derives the authority from (steering_governor.hpp): the car's
+  //! steering angle limit [rad] and friction limit mu g [m/s^2]; +inf = none.
+  double max_steering_angle_rad = std::numeric_limits<double>::infinity();
+  double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();
+  //! The switching authority the split certificate gave before governed_parameters() widened
+  //! it [1/m]; the near-path law keeps it (docs/governor.md). 0 = the parameters' own kbar_sw.
+  double certified_switching_bound = 0.0;
+};
+
 struct ControllerParameters {
   //! Largest supported chain length. Fixed-size storage keeps update() allocation free.
   static constexpr int max_order = 8;
@@ -144,6 +179,8 @@ struct ControllerParameters {
   double switching_curvature_bound() const noexcept {
     return (1.0 - feedforward_share) * lead_curvature_bound;
   }
+  //! Off by default: the split certificate of steering_certificate.hpp alone.
+  SteeringGovernor governor{};
   SlidingSurface surface = SlidingSurface::global;
   CorneringTarget cornering_target = CorneringTarget::rear_axle;
   CurvaturePreview curvature_preview = CurvaturePreview::centred_ramp;

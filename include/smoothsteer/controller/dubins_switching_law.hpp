@@ -23,9 +23,14 @@ double paper_sliding_variable(double lateral_error, double relative_heading, dou
 double global_reference_heading(double lateral_error, double curvature_bound, double k_rob,
                                 double approach_angle) noexcept;
 
-//! kappa for a Dubins car at lateral error e and heading psi relative to the path.
+//! kappa for a Dubins car at lateral error e and heading psi relative to the path, with the
+//! boundary layer of the parameters.
 SwitchingResult dubins_switching_law(double lateral_error, double relative_heading,
                                      double curvature_bound,
+                                     const ControllerParameters& parameters) noexcept;
+//! The same with the boundary layer epsilon >= 0 given (the governed split scales it with kbar).
+SwitchingResult dubins_switching_law(double lateral_error, double relative_heading,
+                                     double curvature_bound, double boundary_layer,
                                      const ControllerParameters& parameters) noexcept;
 
 //! Lateral offset of the lead wheel from the path at which the rear axle lies on the path in

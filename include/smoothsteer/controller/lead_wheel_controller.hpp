@@ -83,12 +83,15 @@ class LeadWheelController final : public SteeringController {
   struct LeadWheelState {
     PathProjection projection;
     double relative_heading = 0.0;
+    double lateral_error = 0.0;       //!< e of the lead wheel from its target curve
     double feedforward_target = 0.0;  //!< curvature that keeps the lead wheel on its target curve
     SwitchingResult law;              //!< the switching part kappa_sw
   };
   //! refresh_target: recompute target_ at this projection (once per period, the first sub-step).
+  //! The switching part has authority switching_bound and boundary layer boundary_layer.
   LeadWheelState evaluate_lead_wheel(Vec2 rear_position, double rear_travel_heading,
-                                     bool refresh_target) noexcept;
+                                     bool refresh_target, double switching_bound,
+                                     double boundary_layer) noexcept;
   //! The curve the lead wheel tracks near its closest point (feedforward.hpp).
   TargetCurve target_curve(const PathProjection& lead) const noexcept;
   //! Sets the parameters and what derives from them (bounds, sum lambda_i^2, sub-step length).
@@ -142,6 +145,12 @@ class LeadWheelController final : public SteeringController {
   }
   Pose2 predicted_pose(const ControllerInput& input) const noexcept;
   double direction_ = 1.0;
+  //! The governor's memory (ControllerParameters::governor): the command's rate at the end of the
+  //! last sub-step, and |v| of the last period for the speed change between periods.
+  double governor_rate_ = 0.0;
+  double feedforward_envelope_ = 0.0;  //!< decaying max of |kappa_ff| (the far law's authority)
+  double far_share_ = 0.0;             //!< weight of the far law in kappa_sw, in [0, 1]
+  double previous_speed_ = -1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;
   ProjectionHint rear_hint_, front_hint_, lead_hint_;

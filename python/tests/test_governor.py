@@ -1,0 +1,55 @@
+"""The steering governor from Python (docs/governor.md): its fields are reachable by keyword, its
+validation names the field, and on seeded random engagement errors the held command keeps the
+governor's rate and acceleration limits. The case count is SMOOTHSTEER_PROPERTY_CASES."""
+import numpy as np
+import pytest
+
+import smoothsteer as ss
+from conftest import base_seed, property_cases
+
+
+def governed_parameters(rate, acceleration):
+    governor = ss.SteeringGovernor(enabled=True, max_steering_rate_radps=rate,
+                                   max_steering_acceleration_radps2=acceleration,
+                                   law_length_m=6.0)
+    return ss.ControllerParameters(order=2, lead_curvature_bound=0.1, feedforward_share=0.3,
+                                   boundary_layer=0.03, governor=governor)
+
+
+def test_governor_fields_round_trip():
+    parameters = governed_parameters(0.4, 8.0)
+    assert parameters.governor.enabled
+    assert parameters.governor.max_steering_rate_radps == 0.4
+    assert parameters.governor.max_steering_acceleration_radps2 == 8.0
+
+
+def test_governor_validation_names_the_field():
+    parameters = governed_parameters(0.4, 8.0)
+    governor = parameters.governor
+    governor.max_steering_acceleration_radps2 = float("inf")
+    parameters.governor = governor
+    with pytest.raises(ValueError, match="governor.max_steering_acceleration_radps2"):
+        parameters.validate()
+
+
+def test_held_command_keeps_the_limits_from_engagement_errors():
+    path = ss.Path.from_waypoints([[0, 0], [40, 3], [80, -3], [120, 0], [160, 0]])
+    for case in range(property_cases(10)):
+        seed = base_seed() + case
+        rng = np.random.default_rng(seed)
+        rate, acceleration = rng.uniform(0.3, 1.0), rng.uniform(6.0, 20.0)
+        speed = rng.uniform(3.0, 12.0)
+        controller = ss.LeadWheelController(governed_parameters(rate, acceleration), path)
+        car = ss.KinematicSingleTrack(2.7)
+        position, heading = (0.0, rng.uniform(-1.0, 1.0)), rng.uniform(-0.3, 0.3)
+        dt, held = 0.02, []
+        for _ in range(400):
+            out = controller.update(position, heading, speed, 0.0, dt)
+            held.append(out.steering_angle_rad)
+            position, heading = car.step(position, heading, out.steering_angle_rad, speed, dt)
+        held = np.array(held)
+        rates = np.abs(np.diff(held)) / dt
+        accelerations = np.abs(np.diff(held, 2)) / dt**2
+        message = f"seed {seed}: R={rate} A={acceleration} v={speed}"
+        assert rates.max() <= rate * (1 + 1e-9), message
+        assert accelerations.max() <= acceleration * (1 + 1e-9), message

@@ -1,0 +1,232 @@
+// The steering governor (docs/governor.md): on random C2 paths with tight turns, random
+// engagement errors and far starts with any heading, speeds 1-30 m/s accelerating and braking,
+// n = 1 and n = 2, the HELD command, differenced at the control period, never exceeds the
+// governor's rate and acceleration limits; the interval of eq. (governor_interval) is exact for
+// the affine map it inverts; and the governed law converges from far away.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/steering_governor.hpp"
+#include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/sim/closed_loop_count.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"
+#include "support/random_setup.hpp"
+
+namespace smoothsteer {
+namespace {
+
+using namespace smoothsteer::testing;
+
+//! Governed parameters of order n. The acceleration limit keeps the governor viable at the top
+//! speed: A >= v R / lambda_1 (docs/governor.md, "viability"), drawn 1.2-6 times above it.
+ControllerParameters random_governed_parameters(Random& random, int order, double top_speed,
+                                                double longitudinal_acceleration) {
+  ControllerParameters p = random_parameters(random, order, random.uniform(0.3, 0.8));
+  p.feedforward_share = random.uniform(0.0, 0.9);
+  p.feedforward_curvature_rate = random.coin() ? random.uniform(0.002, 0.05) : 1e3;
+  p.boundary_layer = random.uniform(0.005, 0.05);
+  const CorneringTarget targets[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
+                                     CorneringTarget::lead_wheel};
+  p.cornering_target = targets[random.integer(0, 2)];
+  SteeringGovernor& g = p.governor;
+  g.enabled = true;
+  g.max_steering_rate_radps = random.uniform(0.2, 2.0);
+  const double viable = 1.5 * top_speed * g.max_steering_rate_radps / p.wheelbases_m[0] +
+                        longitudinal_acceleration * g.max_steering_rate_radps;
+  g.max_steering_acceleration_radps2 = random.uniform(1.2, 6.0) * viable;
+  // At least the derived length (shorter ones can limit-cycle against the rate limit).
+  g.law_length_m = 0.0;
+  if (random.coin()) g.law_length_m = random.uniform(1.0, 3.0) * governed_law_length(p, top_speed);
+  // The near-path law's authority as the split certificate would give it for R at the top
+  // speed (its switching share alone: rate ~ |v| lambda_veh 2 kbar / lambda_1^2).
+  const double lambda = p.wheelbases_m[0];
+  g.certified_switching_bound = std::min(
+      p.switching_curvature_bound(), random.uniform(0.2, 1.0) * g.max_steering_rate_radps * lambda *
+                                         lambda / (2.0 * p.vehicle_wheelbase_m * top_speed));
+  return p;
+}
+
+//! A path with tight turns: waypoints whose curvature reaches `max_curvature` (hairpins at the
+//! lead wheel's bound), or a line, a circle, or lines and arcs.
+std::shared_ptr<const Path> random_tight_path(Random& random, double max_curvature,
+                                              std::string& kind) {
+  const auto shape = static_cast<PathKind>(random.integer(0, 3));
+  kind = to_string(shape);
+  return random_path(random, shape, random.uniform(0.5, 1.0) * max_curvature);
+}
+
+TEST(SteeringGovernor, HeldCommandStaysWithinTheLimits) {
+  double tightest_rate = 0.0, tightest_acceleration = 0.0;
+  const int cases = property_cases(40);
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = case_seed(k);
+    Random random(seed + 301);
+    const int order = random.coin() ? 2 : 1;
+    const double top_speed = 30.0;
+    const double longitudinal = random.uniform(0.0, 3.0);
+    const ControllerParameters p =
+        random_governed_parameters(random, order, top_speed, longitudinal);
+    std::string kind;
+    const auto path = random_tight_path(random, p.lead_curvature_bound, kind);
+    // Engagement errors near the path's start, or a far start with any heading.
+    const bool far = random.coin();
+    const PathProjection origin = path->project({0.0, 0.0});
+    const Vec2 normal = unit_from_heading(origin.heading_rad + 0.5 * pi);
+    const Pose2 start = far ? Pose2{{random.uniform(-60.0, 60.0), random.uniform(-60.0, 60.0)},
+                                    random.uniform(-pi, pi)}
+                            : Pose2{origin.closest_point + random.uniform(-1.0, 1.0) * normal,
+                                    origin.heading_rad + random.uniform(-0.3, 0.3)};
+    const SteeringGovernor& g = p.governor;
+    std::ostringstream text;
+    text << describe(p) << " R=" << g.max_steering_rate_radps
+         << " A=" << g.max_steering_acceleration_radps2 << " l=" << g.law_length_m
+         << " share=" << p.feedforward_share << " L_ff=" << p.feedforward_curvature_rate
+         << " path=" << kind << " start=(" << start.position.x << "," << start.position.y << ","
+         << start.heading_rad << ") dv/dt=" << longitudinal;
+    SCOPED_TRACE(seed_message(seed) + " " + text.str());
+    LeadWheelController controller(p, path);
+    const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+    const double dt = random.uniform(0.01, 0.05);
+    double speed = random.uniform(1.0, top_speed), direction = random.coin() ? 1.0 : -1.0;
+    Pose2 pose = start;
+    double previous[2] = {0.0, 0.0};
+    smoothsteer::detail::count_closed_loop();
+    for (int step = 0; step < static_cast<int>(40.0 / dt); ++step) {
+      const double a = direction * longitudinal;
+      ControllerOutput out;
+      ASSERT_EQ(controller.update({pose.position, pose.heading_rad, speed, a, dt}, out),
+                Status::ok);
+      const double command = out.steering_angle_rad;
+      ASSERT_TRUE(std::isfinite(command));
+      ASSERT_LE(std::abs(command), controller.bounds().steering_angle_rad * (1.0 + 1e-12));
+      // The first period after the start is the chain's stationary initialisation (rate 0).
+      if (step >= 1) {
+        const double rate = std::abs(command - previous[0]) / dt;
+        ASSERT_LE(rate, g.max_steering_rate_radps * (1.0 + 1e-9)) << "step " << step;
+        tightest_rate = std::max(tightest_rate, rate / g.max_steering_rate_radps);
+      }
+      if (step >= 2) {
+        const double second = std::abs(command - 2.0 * previous[0] + previous[1]) / (dt * dt);
+        ASSERT_LE(second, g.max_steering_acceleration_radps2 * (1.0 + 1e-9)) << "step " << step;
+        tightest_acceleration =
+            std::max(tightest_acceleration, second / g.max_steering_acceleration_radps2);
+      }
+      previous[1] = previous[0];
+      previous[0] = command;
+      pose = plant.step(pose, command, speed, dt);
+      speed += a * dt;
+      if (speed > top_speed || speed < 1.0) {
+        speed = std::clamp(speed, 1.0, top_speed);
+        direction = -direction;
+      }
+    }
+  }
+  // Realised / governed limits over all cases; printed for docs/governor.md.
+  std::cout << "governed held-command tightness: rate " << tightest_rate << ", acceleration "
+            << tightest_acceleration << "\n";
+}
+
+TEST(SteeringGovernor, IntervalEndsMeetTheLimitsExactly) {
+  // Eq. (governor_interval) inverts an affine map: at an end of the interval that a limit
+  // defines, the command's acceleration (n = 2) or rate (n = 1) equals that limit.
+  const int cases = property_cases(40);
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = case_seed(k);
+    Random random(seed + 302);
+    const int order = random.coin() ? 2 : 1;
+    const ControllerParameters p = random_governed_parameters(random, order, 20.0, 0.0);
+    ChainAngles angles{};
+    const ChainBounds bounds = compute_chain_bounds(p);
+    for (int i = 0; i < order; ++i) {
+      const auto j = static_cast<std::size_t>(i);
+      angles[j] = random.uniform(-0.9, 0.9) * bounds.angle[j];
+    }
+    const GovernorStep step{.speed_magnitude = random.uniform(1.0, 20.0),
+                            .longitudinal_acceleration = 0.0,
+                            .duration_s = random.uniform(1e-3, 2e-2),
+                            .previous_rate_radps = 0.0};
+    SCOPED_TRACE(seed_message(seed) + " " + describe(p));
+    const double direction = random.coin() ? 1.0 : -1.0;
+    const CurvatureInterval interval = governed_lead_curvature_interval(angles, p, direction, step);
+    ASSERT_LE(interval.low, interval.high);
+    const auto quantity = [&](double kappa) {
+      const CommandDerivatives d =
+          steering_derivatives(angles, p, direction, step.speed_magnitude, 0.0, kappa);
+      return order == 2 ? d.acceleration_radps2 : d.rate_radps;
+    };
+    const double keep = 1.0 - p.governor.margin;
+    const double rate_now = quantity(0.0);
+    for (const double end : {interval.low, interval.high}) {
+      if (!std::isfinite(end)) continue;
+      const double value = quantity(end);
+      if (order == 2) {
+        const double r =
+            steering_derivatives(angles, p, direction, step.speed_magnitude, 0.0, 0.0).rate_radps;
+        const double limit = keep * p.governor.max_steering_acceleration_radps2;
+        const double rate_limit = keep * p.governor.max_steering_rate_radps;
+        // Either the acceleration limit or the rate reaching its limit at the sub-step's end.
+        const bool at_acceleration = std::abs(std::abs(value) - limit) <= 1e-7 * limit;
+        const bool at_rate =
+            std::abs(std::abs(r + value * step.duration_s) - rate_limit) <= 1e-7 * rate_limit;
+        EXPECT_TRUE(at_acceleration || at_rate) << "end " << end << " value " << value;
+      } else {
+        const double change = keep * p.governor.max_steering_acceleration_radps2 * step.duration_s;
+        const double rate_limit = keep * p.governor.max_steering_rate_radps;
+        const bool at_change = std::abs(std::abs(value) - change) <= 1e-7 * change;
+        const bool at_rate = std::abs(std::abs(value) - rate_limit) <= 1e-7 * rate_limit;
+        EXPECT_TRUE(at_change || at_rate)
+            << "end " << end << " value " << value << " rate now " << rate_now;
+      }
+    }
+  }
+}
+
+TEST(SteeringGovernor, GovernedLawConvergesFromFarAway) {
+  // As FeedforwardCertificate.ConvergesFromFarStartsOnCurvedPaths, with the governor: a rear-axle
+  // target, a feedforward that covers the path's curvature, starts 80 m away with any heading.
+  const int cases = property_cases(40);
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = case_seed(k);
+    Random random(seed + 303);
+    const int order = random.coin() ? 2 : 1;
+    ControllerParameters p = random_governed_parameters(random, order, 20.0, 0.0);
+    p.feedforward_share = random.uniform(0.4, 0.8);
+    p.cornering_target =
+        random.coin() ? CorneringTarget::rear_axle : CorneringTarget::rear_axle_exact;
+    const auto kind = random.coin() ? PathKind::line : PathKind::circle;
+    const auto path = random_path(random, kind, 0.9 * p.feedforward_curvature_bound());
+    const Pose2 start{{random.uniform(-80.0, 80.0), random.uniform(-80.0, 80.0)},
+                      random.uniform(-pi, pi)};
+    const double speed = random.uniform(2.0, 20.0);
+    const SteeringGovernor& g = p.governor;
+    SCOPED_TRACE(seed_message(seed) + " " + describe(p) +
+                 " R=" + std::to_string(g.max_steering_rate_radps) +
+                 " A=" + std::to_string(g.max_steering_acceleration_radps2) +
+                 " path=" + to_string(kind) + " v=" + std::to_string(speed));
+    LeadWheelController controller(p, path);
+    const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+    Pose2 pose = start;
+    const double dt = 0.02;
+    ControllerOutput out;
+    smoothsteer::detail::count_closed_loop();
+    const int steps = static_cast<int>(4000.0 / (speed * dt));
+    double tail = 0.0;
+    for (int step = 0; step < steps; ++step) {
+      ASSERT_EQ(controller.update({pose.position, pose.heading_rad, speed, 0.0, dt}, out),
+                Status::ok);
+      pose = plant.step(pose, out.steering_angle_rad, speed, dt);
+      if (step >= steps - static_cast<int>(5.0 / dt)) {
+        tail = std::max(tail, std::abs(out.diagnostics.lateral_error_m));
+      }
+    }
+    EXPECT_LT(tail, 0.02);
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer
