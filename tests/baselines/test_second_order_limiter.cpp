@@ -204,6 +204,32 @@ TEST(SecondOrderLimiter, CommandThatKeepsTheLimitsPassesUnchanged) {
   }
 }
 
+TEST(SecondOrderLimiter, CommandAtExactlyTheLimitsPassesUnchanged) {
+  // The car's limits at 100 Hz: from rest at -0.3 rad the rate grows by A h per period to R,
+  // cruises, and brakes back to rest, each command the previous plus h r in floating point,
+  // so the differences sit at the limits up to round-off. Then the same mirrored.
+  const SteeringLimits limits{1.066, 0.4, 8.0};
+  const double h = 0.01;
+  SteeringSaturator saturator(limits);
+  saturator.reset(-0.3);
+  double command = -0.3;
+  double rate = 0.0;
+  std::vector<double> rates;
+  for (int k = 1; k <= 5; ++k) rates.push_back(k * 0.08);
+  for (int k = 0; k < 100; ++k) rates.push_back(0.4);
+  for (int k = 4; k >= 0; --k) rates.push_back(k * 0.08);
+  for (double sign : {1.0, -1.0}) {
+    for (double r : rates) {
+      command += h * sign * r;
+      double applied = 0.0;
+      ASSERT_EQ(saturator.apply(command, h, applied), command) << "rate " << sign * r;
+      rate = applied;
+    }
+  }
+  EXPECT_EQ(rate, 0.0);
+  EXPECT_EQ(saturator.statistics().limited, 0);
+}
+
 //! Least time from rest to rest over `distance` at rate R and acceleration A.
 double rest_to_rest_time(double distance, double rate, double acceleration) {
   if (distance >= rate * rate / acceleration) return distance / rate + rate / acceleration;
