@@ -25,8 +25,9 @@
 //    Guarantee (recursive feasibility). Let |u| <= D, |r| <= R and u + r|r| / (2A) in [-D, D]
 //    (the invariant set; reset() clamps the measured rate into it). For any next period h the
 //    braking rate r' = sign(r) max(|r| - A h, 0) satisfies (a)-(d): for r' = r - A h > 0,
-//      u + h r' + r'^2 / (2A) = u + r^2 / (2A) - A h^2 / 2 <= D,
-//    for r' = 0 the command stays at u (and u - 0 >= -D trivially). So the window is never empty
+//      u + h r' + r'^2 / (2A) = u + r^2 / (2A) - A h^2 / 2 <= D
+//    (the other side of (d) holds as the command moves away from -D); for r' = 0 the command
+//    stays at u, inside [-D, D] with no stopping distance. So the window is never empty
 //    (up to round-off, handled below by that braking rate), and the held command keeps the
 //    angle, rate and acceleration limits at every sample, whatever the periods.
 //
@@ -34,14 +35,13 @@
 //    raw command clamped to [-D, D] (the previous command if the raw one is not finite), moving
 //    at its own rate v = (target_k - target_{k-1}) / h; a target faster than R is taken as a
 //    jump (v = 0): it cannot be followed anyway, and a step must not be mistaken for motion,
-//    which would carry the command past it. With the relative
-//    error e = target_k - u_{k-1} - h v and the relative rate w = r - v, braking by A h per
-//    period at the current period h brings w to 0 after this step's relative travel plus
+//    which would carry the command past it. With the relative error e = target_k - u_{k-1} - h v
+//    and the relative rate w = r - v, this step and the braking by A h per period after it, at
+//    the current period h, travel (relative to the target)
 //      F_h(w) = h sum_{i=0}^{n} (w - i A h),  n = floor(w / (A h)),
 //    a continuous increasing piecewise-linear function with F_h(n A h) = A h^2 n (n + 1) / 2.
-//    The desired rate is v + sign(e) W(|e|), W = F_h^{-1}:
-//      n = floor((sqrt(1 + 8 q) - 1) / 2),  q = |e| / (A h^2),  W = (|e| / h + A h n (n + 1) / 2) /
-//      (n + 1):
+//    The desired rate is v + sign(e) W(|e|), W = F_h^{-1}: with q = |e| / (A h^2),
+//      n = floor((sqrt(1 + 8 q) - 1) / 2),  W = (|e| / h + A h n (n + 1) / 2) / (n + 1),
 //    the largest closing rate from which the command still stops on the target: the discrete
 //    time-optimal approach (accelerate at A, cruise at R, brake at A). Guarantee: at a constant
 //    period and a constant target that the state can still stop before (|e| >= S_h of the
