@@ -74,8 +74,8 @@ void register_comparison_controllers() {
                              io::Range::positive()),
               vehicle.max_steering_acceleration_radps2};
           if (section.has("max_steering_acceleration_radps2")) {
-            limits.acceleration_radps2 = section.required_number(
-                "max_steering_acceleration_radps2", io::Range::positive());
+            limits.acceleration_radps2 =
+                section.required_number("max_steering_acceleration_radps2", io::Range::positive());
           }
           ComparisonSetup setup;
           setup.path = std::move(path);
