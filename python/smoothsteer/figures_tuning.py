@@ -178,7 +178,7 @@ def fig_pareto(out):
     axis.grid(alpha=0.3, which="both")
     axis.legend(loc="lower right", fontsize=8)
     axis.set_title("Comparison: 15 m/s lane change, kinetic model, 10 Hz actuator at 0.4 rad/s\n"
-                   "(baselines clamped to the car's 0.4 rad/s by SaturatedController)",
+                   "(baselines held to the car's 0.4 rad/s and 8 rad/s^2 by SaturatedController)",
                    fontsize=10)
     figure.tight_layout()
     return save(figure, out, "pareto")

@@ -66,12 +66,17 @@ void register_comparison_controllers() {
         name,
         [name](io::ConfigSection& section, std::shared_ptr<const Path> path,
                const VehicleParameters& vehicle) -> std::unique_ptr<SteeringController> {
-          // Limits C1 and C2: the vehicle's, unless the section sets the rate limit (e.g. to
-          // the scenario actuator's max_rate_radps).
-          const SteeringLimits limits{
+          // Limits C1, C2 and the steering acceleration: the vehicle's, unless the section sets
+          // the rate or acceleration limit (e.g. to the scenario actuator's max_rate_radps).
+          SteeringLimits limits{
               vehicle.max_steering_angle_rad,
               section.number("max_steering_rate_radps", vehicle.max_steering_rate_radps,
-                             io::Range::positive())};
+                             io::Range::positive()),
+              vehicle.max_steering_acceleration_radps2};
+          if (section.has("max_steering_acceleration_radps2")) {
+            limits.acceleration_radps2 =
+                section.required_number("max_steering_acceleration_radps2", io::Range::positive());
+          }
           ComparisonSetup setup;
           setup.path = std::move(path);
           setup.wheelbase_m = vehicle.wheelbase_m();

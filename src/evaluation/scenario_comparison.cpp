@@ -54,7 +54,7 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
       auto controller = make_comparison_controller(name, detail::comparison_setup_for(scenario));
       const io::RunResult run = io::run_scenario(scenario, *controller);
       const SaturationStatistics& s = controller->saturation();
-      add_row(speed, name, run.metrics, std::to_string(s.angle_limited + s.rate_limited), "");
+      add_row(speed, name, run.metrics, std::to_string(s.limited), "");
     }
   }
   table.notes = {
@@ -62,8 +62,9 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
       "rear-axle lateral error over the run. held_*: the held command (zero-order hold) by "
       "differences over the control period (docs/metrics.md). held_above_limits: held-command "
       "samples above the car's angle, rate (0.4 rad/s) or acceleration (8 rad/s^2) limit. "
-      "Every baseline is saturated to the scenario actuator's angle and rate limits; "
-      "clamped_updates: updates in which that saturation cut the raw command. proposed_c0/c1 "
+      "Every baseline is held to the scenario actuator's angle and rate limits and the car's "
+      "steering acceleration limit by the second-order limiter (docs/baselines.md); "
+      "clamped_updates: updates in which that limiter cut the raw command. proposed_c0/c1 "
       "are sized so that their worst case fits those limits at the scenario speed. "
       "paper_max_e_m: the paper's proposed C^1 controller (Sec. IV-C), from "
       "data/paper_figures.csv."};

@@ -1,7 +1,8 @@
 #pragma once
 // The comparison set-up of a scenario (internal): its path and wheelbase, its speed as the
-// nominal speed, and the limits the simulated actuator enforces, so that every controller of
-// a comparison runs under the same C1 and C2. The MPC's steering model gets a first-order lag of
+// nominal speed, and the limits the simulated actuator enforces plus the car's steering
+// acceleration limit, so that every controller of a comparison runs under the same C1, C2 and
+// acceleration limit. The MPC's steering model gets a first-order lag of
 // the dead time plus 3 / (2 pi f_b) (48 ms at 10 Hz). That is twice the three-pole low-pass's
 // own group delay 3 / w_p (24 ms, w_p = ActuatorParameters::pole_radps) and equals the Smith
 // delay the shipped scenarios give the lead-wheel controller (actuator_delay_s 0.048 s: the
@@ -21,7 +22,8 @@ inline ComparisonSetup comparison_setup_for(const io::Scenario& scenario) {
   setup.path = scenario.path;
   setup.wheelbase_m = scenario.vehicle.wheelbase_m();
   setup.nominal_speed_mps = scenario.speed.initial_speed_mps;
-  setup.limits = {scenario.actuator.max_angle_rad, scenario.actuator.max_rate_radps};
+  setup.limits = {scenario.actuator.max_angle_rad, scenario.actuator.max_rate_radps,
+                  scenario.vehicle.max_steering_acceleration_radps2};
   if (!scenario.actuator.ideal && scenario.actuator.bandwidth_hz > 0.0) {
     setup.mpc.steering_time_constant_s =
         scenario.actuator.dead_time_s +

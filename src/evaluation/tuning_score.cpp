@@ -56,7 +56,7 @@ ScenarioScore score_configuration(const io::Scenario& scenario, const std::strin
   const io::RunResult run = io::run_scenario(scenario, timed);
   const Metrics& m = run.metrics;
   result.metrics = m;
-  result.clamped_updates = limited.saturation().angle_limited + limited.saturation().rate_limited;
+  result.clamped_updates = limited.saturation().limited;
   result.diverged = !std::isfinite(m.max_abs_rear_error_m) ||
                     m.max_abs_rear_error_m > divergence_m || m.non_finite_values > 0;
   result.updates = timed.updates();

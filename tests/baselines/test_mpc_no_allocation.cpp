@@ -1,7 +1,8 @@
 // The unconstrained MPC's update() performs no heap allocation (everything is allocated at
 // construction): a counting global operator new observes every allocation of this binary.
 // The constrained variant is not claimed allocation-free: ALGLIB's C core allocates its work
-// arrays with malloc (ae_malloc), which this operator-new counter does not see.
+// arrays with malloc (ae_malloc), which this operator-new counter does not see. The binary's one
+// counter also checks the second-order limiter that wraps every comparison controller.
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "smoothsteer/baselines/mpc_controller.hpp"
+#include "smoothsteer/baselines/steering_limits.hpp"
 #include "support/counting_allocator.hpp"
 
 namespace smoothsteer {
@@ -48,6 +50,18 @@ TEST(MpcRealTime, UnconstrainedUpdateDoesNotAllocate) {
 TEST(MpcRealTime, ConstrainedUpdateMakesNoOperatorNewAllocation) {
   // Only operator new is counted; ALGLIB's malloc calls are outside this check.
   EXPECT_EQ(allocations_in_updates(MpcSolver::constrained), 0);
+}
+
+TEST(SecondOrderLimiterRealTime, ApplyAndResetDoNotAllocate) {
+  SteeringSaturator saturator({1.066, 0.4, 8.0});
+  const long before = allocation_count.load();
+  double rate = 0.0;
+  for (int k = 0; k < 1000; ++k) {
+    const double raw = k % 97 == 0 ? NAN : std::sin(0.05 * k) * (k % 200 < 100 ? 0.1 : 3.0);
+    saturator.apply(raw, k % 3 == 0 ? 0.01 : 0.013, rate);
+  }
+  saturator.reset(0.2, 0.3);
+  EXPECT_EQ(allocation_count.load() - before, 0);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -61,6 +62,24 @@ TEST(BaselineRegistration, BadValuesNameTheFileAndTheKey) {
   EXPECT_NE(pure_pursuit.find("max_lookahead_m"), std::string::npos) << pure_pursuit;
   const std::string unknown = error_of("{type: lqr, gain_per_s: 1}");
   EXPECT_NE(unknown.find("gain_per_s"), std::string::npos) << unknown;
+}
+
+TEST(BaselineRegistration, LimitsAreTheVehiclesUnlessTheSectionSetsThem) {
+  // VehicleParameters{} has no acceleration limit: none unless the key sets one.
+  auto plain = build("{type: stanley}");
+  auto* saturated = dynamic_cast<SaturatedController*>(plain.get());
+  ASSERT_NE(saturated, nullptr);
+  EXPECT_EQ(saturated->limits().angle_rad, VehicleParameters{}.max_steering_angle_rad);
+  EXPECT_EQ(saturated->limits().rate_radps, VehicleParameters{}.max_steering_rate_radps);
+  EXPECT_TRUE(std::isinf(saturated->limits().acceleration_radps2));
+  auto limited = build("{type: pure_pursuit, max_steering_acceleration_radps2: 8}");
+  saturated = dynamic_cast<SaturatedController*>(limited.get());
+  ASSERT_NE(saturated, nullptr);
+  EXPECT_EQ(saturated->limits().acceleration_radps2, 8.0);
+  const std::string bad = error_of("{type: lqr, max_steering_acceleration_radps2: 0}");
+  EXPECT_NE(bad.find("scenario.yaml: key 'controller.max_steering_acceleration_radps2'"),
+            std::string::npos)
+      << bad;
 }
 
 }  // namespace

@@ -15,8 +15,9 @@
 //!   mpc              Autoware's linear MPC, least squares + saturation (mpc_controller.hpp) no
 //!   mpc_constrained  the same MPC with hard angle and rate constraints (ALGLIB QP)   yes (QP)
 //!
-//! Every controller comes wrapped in a SaturatedController with the same SteeringLimits, which
-//! clamps what the controller does not respect itself and counts how often and by how much.
+//! Every controller comes wrapped in a SaturatedController with the same SteeringLimits, whose
+//! second-order limiter holds the command to the angle, rate and acceleration limits where the
+//! controller does not respect them itself, and counts how often and by how much.
 
 #include <memory>
 #include <string>
@@ -38,7 +39,7 @@ struct ComparisonSetup {
   std::shared_ptr<const Path> path;
   double wheelbase_m = 2.7;         //!< lambda_veh [m]
   double nominal_speed_mps = 10.0;  //!< converts the rate limit to delta-bar' = rate / v [m/s]
-  SteeringLimits limits;            //!< C1 and the time-domain rate limit
+  SteeringLimits limits;            //!< C1, the time-domain rate and the acceleration limit
   //! k_rob of the Dubins SMC and the proposed controllers (paper Sec. IV: 0.3).
   double k_rob = 0.3;
   //! psi-bar of the HOSM controller [rad]. It is lowered, if needed, to the largest value with
