@@ -113,7 +113,13 @@ void run_case(const io::Scenario& base_scenario, const std::string& file,
         io::load_scenario(file, {"start.y_m=" + ResultsTable::number(out.offset_m, 6),
                                  "start.heading_rad=" + ResultsTable::number(out.heading_rad, 6)});
   } catch (const std::exception& error) {
-    out.certified = failed_run(base_scenario.controller["type"].as<std::string>(), error.what());
+    // Every row stays in the table, marked failed.
+    out.certified = failed_run(
+        "scenario (" + base_scenario.controller["type"].as<std::string>() + ")", error.what());
+    for (const std::string& name : options.baselines) {
+      out.baselines.push_back(failed_run(name, error.what()));
+    }
+    out.bound = failed_run("lower_bound", error.what());
     return;
   }
   const std::string certified_name =

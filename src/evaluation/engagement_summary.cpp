@@ -105,6 +105,7 @@ std::string EngagementStudyResult::summary_markdown() const {
                      "median_to_best_baseline",
                      "cases_within_1.1x_baseline",
                      "worst_to_bound",
+                     "worst_to_bound_off_path",
                      "median_to_bound",
                      "cases_within_1.5x_bound",
                      "certified_held_above_limits"};
@@ -122,12 +123,13 @@ std::string EngagementStudyResult::summary_markdown() const {
                         "worst_max_e_m", "median_to_bound",   "median_reaching_m",
                         "not_reached",   "held_above_limits", "diverged_cases"};
   for (const auto& [speed, group] : by_speed(cases)) {
-    std::vector<double> to_best, to_bound;
+    std::vector<double> to_best, to_bound, to_bound_off_path;
     int within_best = 0, within_bound = 0, converged = 0;
     long held = 0;
     for (const EngagementCase* c : group) {
       to_best.push_back(c->ratio_to_best_baseline());
       to_bound.push_back(c->ratio_to_bound());
+      if (c->offset_m != 0.0 || c->heading_rad != 0.0) to_bound_off_path.push_back(to_bound.back());
       within_best += to_best.back() <= baseline_factor ? 1 : 0;
       within_bound += to_bound.back() <= bound_factor ? 1 : 0;
       converged += c->bound_converged ? 1 : 0;
@@ -137,6 +139,7 @@ std::string EngagementStudyResult::summary_markdown() const {
                              std::to_string(converged), ResultsTable::number(worst(to_best), 2),
                              ResultsTable::number(median(to_best), 2), std::to_string(within_best),
                              ResultsTable::number(worst(to_bound), 2),
+                             ResultsTable::number(worst(to_bound_off_path), 2),
                              ResultsTable::number(median(to_bound), 2),
                              std::to_string(within_bound), std::to_string(held)});
 
@@ -191,7 +194,7 @@ std::string EngagementStudyResult::summary_markdown() const {
       "to_bound: certified max |e| / the lower bound of the case. The targets: <= 1.1 and <= 1.5 "
       "in every case, and no held-command sample above the car's limits. Where the start is on the "
       "path (offset and heading 0) the bound is the lane change's own, near 0, so its ratio is "
-      "large whatever the controller does."};
+      "large whatever the controller does; worst_to_bound_off_path leaves that case out."};
   controllers.notes = {
       "median_reaching_m over the cases that reach (|e| stays below the threshold to the end); "
       "not_reached: the others. held_above_limits: held-command samples above the car's angle, "
