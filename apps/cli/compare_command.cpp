@@ -7,17 +7,22 @@
 //   parameters    circle_sections.yaml with the four settings of Sec. IV-A
 //   tuning        every controller tuned by one rule on training scenarios, reported held-out
 //                 (the study of docs/baselines.md; scenario NAME@V: NAME at V m/s)
+//   engagement    the lane changes started off the path: certified vs baselines vs the
+//                 optimal-control lower bound (docs/engagement.md)
 // Options of `compare` work before or after the sub-command (`compare parameters -o DIR`).
 
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
+#include "smoothsteer/evaluation/engagement_study.hpp"
 #include "smoothsteer/evaluation/paper_figures.hpp"
 #include "smoothsteer/evaluation/reaching_benchmark.hpp"
 #include "smoothsteer/evaluation/scenario_comparison.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
+#include "smoothsteer/io/atomic_output.hpp"
 
 namespace smoothsteer::cli {
 
@@ -38,6 +43,7 @@ struct CompareOptions {
   std::vector<std::string> held_out{"lane_change_10", "lane_change_15", "lane_change_19",
                                     "circle_sections"};
   std::vector<std::string> controllers = study_controller_names();
+  EngagementStudyOptions engagement;  // scenario_files: lane_change_{10,15,19} of --scenarios
 };
 
 void emit(const ResultsTable& table, const CompareOptions& options, const std::string& stem) {
@@ -69,6 +75,46 @@ std::vector<io::Scenario> load_scenarios(const CompareOptions& options,
 PaperFigures paper_figures(const CompareOptions& options) {
   return options.paper_figures_file.empty() ? PaperFigures{}
                                             : PaperFigures::load(options.paper_figures_file);
+}
+
+void add_engagement_command(CLI::App& compare, const std::shared_ptr<CompareOptions>& options) {
+  CLI::App* engagement = compare.add_subcommand(
+      "engagement", "the lane changes started off the path, against the optimal lower bound");
+  EngagementStudyOptions& defaults = options->engagement;
+  engagement->add_option("--offsets", defaults.offsets_m, "start offsets start.y_m [m]")
+      ->capture_default_str();
+  engagement
+      ->add_option("--headings", defaults.headings_rad, "heading errors start.heading_rad [rad]")
+      ->capture_default_str();
+  engagement->add_option("--baselines", defaults.baselines,
+                         "baselines (default: the tuning study's)");
+  engagement->add_option("--bound-step", defaults.bound_time_step_s, "lower bound's time grid [s]")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-3, 0.05));
+  engagement->add_option("--threads", defaults.threads, "worker threads")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  engagement->callback([options] {
+    EngagementStudyOptions study = options->engagement;
+    study.scenario_files.clear();
+    for (const char* speed : {"10", "15", "19"}) {
+      study.scenario_files.push_back(options->scenario_directory + "/lane_change_" + speed +
+                                     ".yaml");
+    }
+    const EngagementStudyResult result = run_engagement_study(study);
+    const std::string summary = result.summary_markdown();
+    std::filesystem::create_directories(options->output_directory);
+    const std::string stem = options->output_directory + "/engagement";
+    io::write_file_atomically(stem + ".csv", result.table().to_csv(), "--out");
+    io::write_file_atomically(stem + ".md", summary, "--out");
+    double solve_time = 0.0;
+    for (const EngagementCase& c : result.cases) solve_time += c.bound_solve_time_s;
+    std::printf(
+        "%s\nwritten: %s.csv and .md\n%zu cases in %.1f s on %d threads (lower bounds: "
+        "%.1f s of Ipopt)\n",
+        summary.c_str(), stem.c_str(), result.cases.size(), result.wall_time_s, study.threads,
+        solve_time);
+  });
 }
 
 }  // namespace
@@ -140,6 +186,7 @@ void add_compare_command(CLI::App& app) {
     emit(result.table(), *options, "tuning_rule");
     emit(result.timings_table(), *options, "tuning_rule_timings");
   });
+  add_engagement_command(*compare, options);
 }
 
 }  // namespace smoothsteer::cli

@@ -62,6 +62,7 @@ ReachingSolution solve_with(const ReachingProblem& problem, double guess,
   app->Options()->SetNumericValue("acceptable_tol", 1e-6);
   app->Options()->SetNumericValue("acceptable_constr_viol_tol", 1e-8);
   app->Options()->SetIntegerValue("acceptable_iter", 10);
+  const std::lock_guard lock(detail::ipopt_mutex());
   if (app->Initialize() != Ipopt::Solve_Succeeded) {
     solution.solver_status = "Ipopt initialisation failed";
     return solution;

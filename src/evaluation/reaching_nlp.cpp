@@ -231,6 +231,11 @@ Ipopt::SmartPtr<Ipopt::TNLP> make_reaching_nlp(const ReachingProblem& problem, d
   return new ReachingNlp(problem, guess, solution, start);
 }
 
+std::mutex& ipopt_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 const char* status_text(Ipopt::ApplicationReturnStatus status) {
   switch (status) {
     case Ipopt::Solve_Succeeded:

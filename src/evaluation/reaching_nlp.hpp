@@ -4,6 +4,8 @@
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
 
+#include <mutex>
+
 #include "reaching_start.hpp"
 #include "smoothsteer/evaluation/optimal_reaching.hpp"
 
@@ -17,5 +19,9 @@ Ipopt::SmartPtr<Ipopt::TNLP> make_reaching_nlp(const ReachingProblem& problem, d
 
 //! Ipopt's return status as text.
 const char* status_text(Ipopt::ApplicationReturnStatus status);
+
+//! Held around every Ipopt solve of the process: this build's MUMPS (the sequential libdmumps
+//! with its MPI stub) keeps global state, so two solves must not run at the same time.
+std::mutex& ipopt_mutex();
 
 }  // namespace smoothsteer::detail

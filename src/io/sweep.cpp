@@ -83,30 +83,15 @@ std::vector<std::vector<std::string>> paper_variations(const Scenario& base) {
           {set("k_rob", k_rob * (1.0 - 1.0 / 3.0))}};
 }
 
-std::vector<SweepRow> run_sweep(const std::string& scenario_file,
-                                const std::vector<std::string>& base_overrides,
-                                const std::vector<std::vector<std::string>>& sets, int threads,
-                                const std::function<void(int, int)>& progress) {
-  std::vector<SweepRow> rows(sets.size());
+void run_parallel(std::size_t count, int threads, const std::function<void(std::size_t)>& task,
+                  const std::function<void(int, int)>& progress) {
   std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
   std::mutex progress_mutex;
-  const int total = static_cast<int>(sets.size());
+  const int total = static_cast<int>(count);
   auto worker = [&] {
-    for (std::size_t i = next++; i < sets.size(); i = next++) {
-      SweepRow& row = rows[i];
-      row.overrides = sets[i];
-      try {
-        std::vector<std::string> overrides = base_overrides;
-        overrides.insert(overrides.end(), sets[i].begin(), sets[i].end());
-        const Scenario scenario = load_scenario(scenario_file, overrides);
-        const RunResult result = run_scenario(scenario);
-        row.metrics = result.metrics;
-        row.ok = result.simulation.status == Status::ok && !result.simulation.non_finite;
-        if (!row.ok) row.error = "run stopped: " + result.simulation.stop_reason;
-      } catch (const std::exception& error) {
-        row.error = error.what();
-      }
+    for (std::size_t i = next++; i < count; i = next++) {
+      task(i);
       const int finished = ++done;
       if (progress) {
         std::lock_guard lock(progress_mutex);
@@ -114,12 +99,35 @@ std::vector<SweepRow> run_sweep(const std::string& scenario_file,
       }
     }
   };
-  unsigned count = threads > 0 ? static_cast<unsigned>(threads)
-                               : std::max(1u, std::thread::hardware_concurrency());
-  count = std::min<unsigned>(count, static_cast<unsigned>(std::max<std::size_t>(sets.size(), 1)));
+  unsigned workers = threads > 0 ? static_cast<unsigned>(threads)
+                                 : std::max(1u, std::thread::hardware_concurrency());
+  workers = std::min<unsigned>(workers, static_cast<unsigned>(std::max<std::size_t>(count, 1)));
   std::vector<std::thread> pool;
-  for (unsigned t = 0; t < count; ++t) pool.emplace_back(worker);
+  for (unsigned t = 0; t < workers; ++t) pool.emplace_back(worker);
   for (std::thread& thread : pool) thread.join();
+}
+
+std::vector<SweepRow> run_sweep(const std::string& scenario_file,
+                                const std::vector<std::string>& base_overrides,
+                                const std::vector<std::vector<std::string>>& sets, int threads,
+                                const std::function<void(int, int)>& progress) {
+  std::vector<SweepRow> rows(sets.size());
+  auto run_row = [&](std::size_t i) {
+    SweepRow& row = rows[i];
+    row.overrides = sets[i];
+    try {
+      std::vector<std::string> overrides = base_overrides;
+      overrides.insert(overrides.end(), sets[i].begin(), sets[i].end());
+      const Scenario scenario = load_scenario(scenario_file, overrides);
+      const RunResult result = run_scenario(scenario);
+      row.metrics = result.metrics;
+      row.ok = result.simulation.status == Status::ok && !result.simulation.non_finite;
+      if (!row.ok) row.error = "run stopped: " + result.simulation.stop_reason;
+    } catch (const std::exception& error) {
+      row.error = error.what();
+    }
+  };
+  run_parallel(sets.size(), threads, run_row, progress);
   return rows;
 }
 

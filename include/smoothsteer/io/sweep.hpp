@@ -34,6 +34,11 @@ struct SweepRow {
   Metrics metrics;
 };
 
+//! Calls task(i) once for every i in [0, count) on `threads` worker threads (0 = all cores),
+//! `progress(done, count)` after each, serialised. `task` must not throw.
+void run_parallel(std::size_t count, int threads, const std::function<void(std::size_t)>& task,
+                  const std::function<void(int, int)>& progress = {});
+
 //! Runs every override set (added to `base_overrides`) on `threads` worker threads (0 = all
 //! cores). `progress(done, total)` is called from the workers after each run, serialised.
 std::vector<SweepRow> run_sweep(const std::string& scenario_file,
