@@ -86,6 +86,21 @@ YAML::Node read_vehicle(ConfigSection& c, Scenario& s) {
   return resolved;
 }
 
+//! Sets `entry` in `target`; a mapping over a mapping (a scenario's or --set's vehicle.front_tire
+//! or vehicle.double_track keys over the vehicle file's group) is overlaid key by key, so that
+//! the group's other keys stay the file's.
+void overlay(YAML::Node& target, const std::pair<YAML::Node, YAML::Node>& entry) {
+  const std::string key = entry.first.as<std::string>();
+  YAML::Node existing = target[key];
+  if (existing && existing.IsMap() && entry.second.IsMap()) {
+    YAML::Node copy = YAML::Clone(existing);
+    for (const auto& inner : entry.second) overlay(copy, {inner.first, inner.second});
+    target[key] = copy;
+  } else {
+    target[key] = entry.second;
+  }
+}
+
 template <typename Validated>
 void check(const ConfigSection& c, const Validated& value) {
   if (const std::string error = value.validation_error(); !error.empty()) {
@@ -167,8 +182,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   }
   if (vehicle_node && vehicle_node.IsMap()) {
     for (const auto& entry : vehicle_node) {
-      if (entry.first.as<std::string>() != "file")
-        merged[entry.first.as<std::string>()] = entry.second;
+      if (entry.first.as<std::string>() != "file") overlay(merged, entry);
     }
   }
   ConfigSection vehicle(merged, "vehicle", vehicle_label);
