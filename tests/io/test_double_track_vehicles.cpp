@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/io/schedule_files.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer::io {
@@ -56,6 +57,16 @@ TEST(DoubleTrackVehicles, SteeringLimitsArePublishedOnes) {
         load_scenario(scenario("lane_change_10"), {"vehicle.file=../vehicles/" + car + ".yaml"});
     EXPECT_DOUBLE_EQ(s.vehicle.max_steering_angle_rad, angle) << car;
     EXPECT_DOUBLE_EQ(s.vehicle.max_steering_rate_radps, 0.4) << car;
+  }
+}
+
+// `smoothsteer tune` reads the same files (it ignores the simulation-only keys).
+TEST(DoubleTrackVehicles, TunerReadsTheCars) {
+  for (const char* car : {"passenger_car", "ford_escort", "bmw_320i", "vw_vanagon"}) {
+    const VehicleLimits limits = load_vehicle_limits(
+        (fs::path(smoothsteer::testing::source_dir()) / "vehicles" / (std::string(car) + ".yaml"))
+            .string());
+    EXPECT_DOUBLE_EQ(limits.max_steering_rate_radps, 0.4) << car;
   }
 }
 
