@@ -43,7 +43,8 @@ std::array<double, 2> DoubleTrack::front_wheel_angles(double delta) const noexce
   const double share = body_.ackermann_share;
   if (share == 0.0) return {delta, delta};
   // Full Ackermann about the single-track angle: tan(delta_left) = L t / (L - T_f t / 2) with
-  // t = tan(delta), so that cot(delta_outer) - cot(delta_inner) = T_f / L (Rajamani ch. 3.1).
+  // t = tan(delta), so that cot(delta_outer) - cot(delta_inner) = T_f / L (Gillespie, Fundamentals
+  // of Vehicle Dynamics, ch. 6, low-speed turning).
   const double wheelbase = parameters_.wheelbase_m();
   const double t = std::tan(delta);
   const double half = 0.5 * body_.front_track_m;

@@ -41,7 +41,7 @@ std::optional<Violation> DoubleTrackParameters::first_violation(const char* owne
     return bad("rear_roll_stiffness_nmprad", rear_roll_stiffness_nmprad, "must be finite and >= 0");
   }
   // The body rolls about an axis on the ground: gravity's moment m g h phi tips it over unless
-  // the springs carry more (Rajamani ch. 8, the roll equation's stiffness K_phi - m g h).
+  // the springs carry more (Rajamani, roll dynamics: the roll equation's stiffness K_phi - m g h).
   const double tipping = mass_kg * gravity_mps2 * roll_arm_m;
   if (!(roll_stiffness_nmprad() > tipping)) {
     return bad("rear_roll_stiffness_nmprad", rear_roll_stiffness_nmprad,

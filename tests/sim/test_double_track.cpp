@@ -95,7 +95,7 @@ double slip_for(const TireParameters& tire, double load, double force) {
   return 0.5 * (low + high);
 }
 
-//! The textbook steady state (Milliken & Milliken ch. 18; Gillespie, Fundamentals of Vehicle
+//! The textbook steady state (Gillespie, Fundamentals of Vehicle
 //! Dynamics, ch. 6, "lateral load transfer"): roll K_phi phi = m h (a_y cos phi + g sin phi);
 //! each axle's load transfer K_phi,axle phi / T; the axle's two tires D_i = mu (1 + s dfz_i) Fz_i
 //! add to mu 2 Fz0 (1 + s (dFz / Fz0)^2), so transfer shrinks the axle's curve by that factor;

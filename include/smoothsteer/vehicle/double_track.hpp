@@ -10,10 +10,10 @@
 //! axis point below the CG at rest; vx, vy, r are its body-frame velocities (VehicleState).
 //! Pitch is quasi-static: the longitudinal load transfer is the drive force's pitch moment.
 //!
-//! Kinetic energy (the yaw-roll model of Rajamani, Vehicle Dynamics and Control, ch. 8, written
-//! with the CG offset -h sin(phi) of the rolled body):
-//!   T = m (vx^2 + vy^2) / 2 + Iz r^2 / 2 + I_phi phi'^2 / 2 + m h (sin(phi) vx r - cos(phi) vy
-//!   phi')
+//! Kinetic energy (the yaw-roll model of Rajamani, Vehicle Dynamics and Control, 2nd ed.,
+//! chapter "Roll Dynamics and Rollover Prevention", with the CG offset -h sin(phi) of the body):
+//!   T = m (vx^2 + vy^2) / 2 + Iz r^2 / 2 + I_phi phi'^2 / 2
+//!       + m h (sin(phi) vx r - cos(phi) vy phi')
 //! with I_phi = I_xx + m h^2 about the roll axis; potential V = K_phi phi^2 / 2 + m g h cos(phi).
 //! Its equations of motion in the body frame (Boltzmann-Hamel / Euler-Poincare form), exact for
 //! this T and therefore conserving T + V up to the tire forces' and the dampers' power:
@@ -28,16 +28,17 @@
 //! (-lr, +-T_r/2); front road-wheel angles delta_i (Ackermann share, double_track_parameters.hpp),
 //! rear 0. Slip angle alpha_i = delta_i - atan2(vy + r x_i, vx - r y_i) (CommonRoad vehicle models
 //! 2019b, multi-body model, "lateral slip angles", from Allen et al. 1992 eq. A42-A45).
-//! Vertical load Fz_i = static - (+-) F h / (2 L) (front -, rear +; F the drive force)
+//! Vertical load Fz_i = static -+ F h / (2 L) (front -, rear +; F the drive force, m a_x with
+//! the acceleration input)
 //!   -+ (K_phi,axle phi + D_phi,axle phi') / T_axle   (left -, right +),
 //! so the springs of each axle carry their share K_phi,axle / K_phi of the roll moment and the
-//! lateral load transfer per axle follows the roll stiffness distribution (Rajamani ch. 8;
-//! Milliken & Milliken, Race Car Vehicle Dynamics, ch. 18). A lifted wheel carries Fz = 0.
-//! Tires: the lateral Magic Formula of the vehicle's axle tire (Pacejka, Tire and Vehicle
-//! Dynamics, 3rd ed., ch. 4), D = mu (1 + s dfz) Fz with the load sensitivity s and
-//! dfz = (Fz - Fz0) / Fz0 about the wheel's static load Fz0 (Pacejka 2002's mu_y = p_Dy1 + p_Dy2
-//! dfz); combined slip by the friction ellipse: with the longitudinal force Fx_i the side force
-//! is Fy_i = Fy0_i sqrt(1 - (Fx_i / (mu_x Fz_i))^2), so (Fx/mu_x Fz)^2 + (Fy/mu Fz)^2 <= 1.
+//! lateral load transfer per axle follows the roll stiffness distribution (Rajamani, roll
+//! dynamics; Gillespie, Fundamentals of Vehicle Dynamics, ch. 6, lateral load transfer). A lifted
+//! wheel carries Fz = 0. Tires: the lateral Magic Formula of the vehicle's axle tire (Pacejka, Tire
+//! and Vehicle Dynamics, 3rd ed., ch. 4), D = mu (1 + s dfz) Fz with the load sensitivity s and dfz
+//! = (Fz - Fz0) / Fz0 about the wheel's static load Fz0 (Pacejka 2002's mu_y = p_Dy1 + p_Dy2 dfz);
+//! combined slip by the friction ellipse: with the longitudinal force Fx_i the side force is Fy_i =
+//! Fy0_i sqrt(1 - (Fx_i / (mu_x Fz_i))^2), so (Fx/mu_x Fz)^2 + (Fy/mu Fz)^2 <= 1.
 //!
 //! Longitudinal input. derivative() takes the speed profile's acceleration, like the single-track
 //! models: the drive force is the one that makes vx' = ax (the CommonRoad models' premise of an

@@ -5,10 +5,10 @@
 //! of the drive and brake forces, the tires' longitudinal friction and load sensitivity, and the
 //! Ackermann share of the steering linkage. Sources: the CommonRoad multi-body model's parameter
 //! sets (M. Althoff, "CommonRoad: Vehicle Models", version 2019b, parameters from Allen et al.
-//! 1992, appendix A), the roll model of Rajamani, Vehicle Dynamics and Control (2nd ed.), ch. 8,
-//! and the Magic Formula of Pacejka, Tire and Vehicle Dynamics (3rd ed.), ch. 4. The vehicle
-//! files in vehicles/ derive the values and say which are assumed; the defaults are those of
-//! CommonRoad vehicle 2 (BMW 320i, vehicles/bmw_320i.yaml).
+//! 1992, appendix A), the roll model of Rajamani, Vehicle Dynamics and Control (2nd ed.), chapter
+//! "Roll Dynamics and Rollover Prevention", and the Magic Formula of Pacejka, Tire and Vehicle
+//! Dynamics (3rd ed.), ch. 4. The vehicle files in vehicles/ derive the values and say which are
+//! assumed; the defaults are those of CommonRoad vehicle 2 (BMW 320i, vehicles/bmw_320i.yaml).
 
 #include <optional>
 
@@ -18,9 +18,10 @@ namespace smoothsteer {
 
 struct DoubleTrackParameters {
   double front_track_m = 1.3868;  //!< T_f, distance between the front wheels' centres [m]
-  double rear_track_m = 1.3640;  //!< T_r [m]
-  //! Roll inertia of the body about the longitudinal axis through its CG, I_phi [kg m^2]; the
-  //! model adds m h^2 for the roll axis (on the ground, CommonRoad h_raf = h_rar = 0).
+  double rear_track_m = 1.3640;   //!< T_r [m]
+  //! Roll inertia of the body about the longitudinal axis through its CG, I_xx [kg m^2]; the
+  //! model adds m h^2 for the roll axis, I_phi = I_xx + m h^2 (on the ground, CommonRoad h_raf =
+  //! h_rar = 0).
   double roll_inertia_kgm2 = 207.27;
   //! Roll stiffness of each axle, K_phi,i: roll moment per roll angle that the axle's springs
   //! and anti-roll bar carry to its wheels [N m/rad].
