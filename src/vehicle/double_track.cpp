@@ -130,7 +130,9 @@ DoubleTrack::WheelForces DoubleTrack::forces(const VehicleState& s, double delta
         numerator += lateral(longitudinal(share[k], force, k), k) * sin_delta[k];
         denominator += share[k] * cos_delta[k];
       }
-      force = numerator / denominator;  // cos(delta_i) > 0: |delta| < 1.5 rad
+      // The shares' cosines add to > 0.1 unless full Ackermann turns an inner wheel past 84 deg
+      // (|delta| near 1.5 rad on a short wheelbase); there the steering correction is dropped.
+      force = denominator > 0.1 ? numerator / denominator : numerator;
     }
   }
   w.drive_force_n = force;
