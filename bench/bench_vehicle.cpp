@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "smoothsteer/vehicle/double_track.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 
 namespace smoothsteer {
@@ -41,6 +42,28 @@ void BM_SideSlipObserverMagicFormula(benchmark::State& state) {
 }
 BENCHMARK(BM_SideSlipObserverLinear)->Arg(1900)->Arg(200);
 BENCHMARK(BM_SideSlipObserverMagicFormula)->Arg(1900)->Arg(200);
+
+// One evaluation of a model's derivative in a 4 m/s^2 corner at 20 m/s (the double-track model's
+// cost against the single-track one; docs/benchmarks.md).
+template <typename Model>
+void BM_ModelDerivative(benchmark::State& state) {
+  VehicleParameters car;
+  car.double_track.emplace();
+  const Model model(car);
+  VehicleState s;
+  s.vx_mps = 20.0;
+  s.vy_mps = -0.2;
+  s.yaw_rate_radps = 0.2;
+  s.roll_rad = 0.05;
+  double delta = 0.026;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(delta);
+    const VehicleState d = model.derivative(s, delta, 0.1);
+    benchmark::DoNotOptimize(d);
+  }
+}
+BENCHMARK_TEMPLATE(BM_ModelDerivative, DynamicSingleTrack);
+BENCHMARK_TEMPLATE(BM_ModelDerivative, DoubleTrack);
 
 }  // namespace
 }  // namespace smoothsteer

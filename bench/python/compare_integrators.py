@@ -6,7 +6,8 @@ rkf78 at a tolerance of 1e-10 (and with fixed_rk4 at 1 ms, the method of earlier
 
 Usage (repository root, after a build):
   /usr/bin/python3 bench/python/compare_integrators.py [--cli build/ci/apps/smoothsteer]
-      [--candidate rkf78:1e-8 --candidate dopri5:1e-7 ...] [SCENARIO.yaml ...]
+      [--candidate rkf78:1e-8 --candidate dopri5:1e-7 ...] [--set key=value ...] [SCENARIO.yaml ...]
+(--set applies to every run, e.g. --set model=double_track for the double-track plant.)
 Prints, per scenario: model evaluations per control step, and for each candidate the largest
 difference of a length metric [m], of an angle metric [rad], of a rate or acceleration metric
 [rad/s, rad/s^2], of a time metric [s], and the counts that differ; then one markdown table.
@@ -25,10 +26,13 @@ REFERENCES = {"fixed_rk4 0.1 ms": ["simulation.integrator=fixed_rk4", "simulatio
 BEFORE = ("fixed_rk4 1 ms", ["simulation.integrator=fixed_rk4"])
 
 
+COMMON = []
+
+
 def run(cli, scenario, overrides, scratch):
     out = os.path.join(scratch, "run")
     command = [cli, "run", scenario, "--out", out]
-    for item in overrides:
+    for item in COMMON + overrides:
         command += ["--set", item]
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "summary.json")) as handle:
@@ -76,7 +80,10 @@ def main():
     parser.add_argument("--cli", default="build/ci/apps/smoothsteer")
     parser.add_argument("--candidate", action="append",
                         help="integrator:tolerance, e.g. rkf78:1e-8 (default: the scenario's own)")
+    parser.add_argument("--set", action="append", default=[], dest="common",
+                        help="an override for every run, e.g. model=double_track")
     args = parser.parse_args()
+    COMMON.extend(args.common)
     scenarios = args.scenarios or sorted(glob.glob("scenarios/*.yaml"))
     candidates = [(c, ["simulation.integrator=" + c.split(":")[0],
                        "simulation.integrator_tolerance=" + c.split(":")[1]])

@@ -20,6 +20,31 @@ YAML::Node read_tire(ConfigSection c, TireParameters& tire) {
   return c.resolved();
 }
 
+//! The double-track group of a vehicle (double_track_parameters.hpp); ranges here, the physical
+//! rules (the body must not tip over on its springs, damping > 0) in its validation.
+YAML::Node read_double_track(ConfigSection c, DoubleTrackParameters& d) {
+  d.front_track_m = c.required_number("front_track_m", {0.0, 5.0, true, false});
+  d.rear_track_m = c.required_number("rear_track_m", {0.0, 5.0, true, false});
+  d.roll_inertia_kgm2 = c.required_number("roll_inertia_kgm2", Range::positive());
+  d.front_roll_stiffness_nmprad =
+      c.required_number("front_roll_stiffness_nmprad", Range::non_negative());
+  d.rear_roll_stiffness_nmprad =
+      c.required_number("rear_roll_stiffness_nmprad", Range::non_negative());
+  d.front_roll_damping_nmsprad =
+      c.required_number("front_roll_damping_nmsprad", Range::non_negative());
+  d.rear_roll_damping_nmsprad =
+      c.required_number("rear_roll_damping_nmsprad", Range::non_negative());
+  d.drive_share_front = c.required_number("drive_share_front", {0.0, 1.0});
+  d.brake_share_front = c.required_number("brake_share_front", {0.0, 1.0});
+  d.longitudinal_friction_mu =
+      c.number("longitudinal_friction_mu", d.longitudinal_friction_mu, {0.0, 3.0, true, false});
+  d.friction_load_sensitivity =
+      c.number("friction_load_sensitivity", d.friction_load_sensitivity, {-0.5, 0.5, true, false});
+  d.ackermann_share = c.number("ackermann_share", d.ackermann_share, {0.0, 1.0});
+  c.finish();
+  return c.resolved();
+}
+
 //! Reads a vehicle mapping (from a vehicle file, overlaid with the scenario's own keys).
 YAML::Node read_vehicle(ConfigSection& c, Scenario& s) {
   VehicleParameters& v = s.vehicle;
@@ -45,6 +70,11 @@ YAML::Node read_vehicle(ConfigSection& c, Scenario& s) {
   v.kinetic_above_mps = c.number("kinetic_above_mps", v.kinetic_above_mps, {0.1, 50.0});
   v.kinematic_relaxation_s =
       c.number("kinematic_relaxation_s", v.kinematic_relaxation_s, Range::positive());
+  YAML::Node double_track;
+  if (c.has("double_track")) {
+    v.double_track.emplace();
+    double_track = read_double_track(c.section("double_track"), *v.double_track);
+  }
   c.finish();
   if (const std::string error = v.validation_error(); !error.empty()) {
     throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error);
@@ -52,7 +82,23 @@ YAML::Node read_vehicle(ConfigSection& c, Scenario& s) {
   YAML::Node resolved = c.resolved();
   resolved["front_tire"] = front;
   resolved["rear_tire"] = rear;
+  if (v.double_track) resolved["double_track"] = double_track;
   return resolved;
+}
+
+//! Sets `entry` in `target`; a mapping over a mapping (a scenario's or --set's vehicle.front_tire
+//! or vehicle.double_track keys over the vehicle file's group) is overlaid key by key, so that
+//! the group's other keys stay the file's.
+void overlay(YAML::Node& target, const std::pair<YAML::Node, YAML::Node>& entry) {
+  const std::string key = entry.first.as<std::string>();
+  YAML::Node existing = target[key];
+  if (existing && existing.IsMap() && entry.second.IsMap()) {
+    YAML::Node copy = YAML::Clone(existing);
+    for (const auto& inner : entry.second) overlay(copy, {inner.first, inner.second});
+    target[key] = copy;
+  } else {
+    target[key] = entry.second;
+  }
 }
 
 template <typename Validated>
@@ -113,7 +159,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   c.set_overridden_keys(overridden);
   s.name = c.text("name", std::filesystem::path(file).stem().string());
   s.description = c.text("description", "");
-  s.model = c.text("model", "dynamic", {"dynamic", "kinematic"});
+  s.model = c.text("model", "dynamic", {"dynamic", "kinematic", "double_track"});
 
   // Vehicle: the file's keys, overlaid with the scenario's own keys.
   YAML::Node vehicle_node = c.raw("vehicle");
@@ -136,13 +182,18 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   }
   if (vehicle_node && vehicle_node.IsMap()) {
     for (const auto& entry : vehicle_node) {
-      if (entry.first.as<std::string>() != "file")
-        merged[entry.first.as<std::string>()] = entry.second;
+      if (entry.first.as<std::string>() != "file") overlay(merged, entry);
     }
   }
   ConfigSection vehicle(merged, "vehicle", vehicle_label);
   vehicle.set_overridden_keys(overridden);
   YAML::Node resolved_vehicle = read_vehicle(vehicle, s);
+  if (s.model == "double_track" && !s.vehicle.double_track) {
+    throw ConfigError(vehicle_label +
+                      ": key 'vehicle.double_track': is required by model: "
+                      "double_track (tracks, roll inertia, roll stiffness and damping, drive and "
+                      "brake shares; docs/scenarios.md)");
+  }
   if (vehicle_node && vehicle_node["file"]) resolved_vehicle["file"] = vehicle_node["file"];
 
   ConfigSection actuator = c.section("actuator");
@@ -259,6 +310,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
 
 std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& s) {
   if (s.model == "kinematic") return std::make_unique<KinematicVehicleModel>(s.vehicle);
+  if (s.model == "double_track") return std::make_unique<DoubleTrack>(s.vehicle);
   return std::make_unique<DynamicSingleTrack>(s.vehicle);
 }
 

@@ -44,7 +44,8 @@ const std::set<std::string>& ignored_keys() {
                                           "front_tire",
                                           "rear_tire",
                                           "kinematic_below_mps",
-                                          "kinetic_above_mps"};
+                                          "kinetic_above_mps",
+                                          "double_track"};
   return keys;
 }
 

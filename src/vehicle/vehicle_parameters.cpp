@@ -104,6 +104,12 @@ std::optional<Violation> VehicleParameters::first_violation() const noexcept {
   if (!positive(kinematic_relaxation_s)) {
     return bad("kinematic_relaxation_s", kinematic_relaxation_s, "must be finite and > 0");
   }
+  if (double_track) {
+    if (auto v = double_track->first_violation(owner, "double_track.", mass_kg, gravity_mps2,
+                                               cg_height_m)) {
+      return v;
+    }
+  }
   return std::nullopt;
 }
 

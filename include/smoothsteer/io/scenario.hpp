@@ -16,6 +16,7 @@
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "smoothsteer/sim/simulation.hpp"
+#include "smoothsteer/vehicle/double_track.hpp"
 
 namespace smoothsteer::io {
 
@@ -23,7 +24,7 @@ struct Scenario {
   std::string name;
   std::string description;
   std::string file;               //!< the scenario file as given
-  std::string model = "dynamic";  //!< "dynamic" or "kinematic"
+  std::string model = "dynamic";  //!< "dynamic", "kinematic" or "double_track"
   VehicleParameters vehicle;
   std::string vehicle_name;
   std::string vehicle_source;  //!< citation of the parameter set

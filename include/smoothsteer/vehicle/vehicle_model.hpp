@@ -1,11 +1,11 @@
 #pragma once
 //! \file vehicle_model.hpp
-//! Planar single-track vehicle models behind one interface. The state is that of the kinetic
-//! model (Rajamani ch. 2; paper_notes §9): position of the centre of gravity (CG), heading, and
-//! the body-frame velocity and yaw rate. The kinematic model uses the same state, with vy and r
-//! fixed algebraically by the steering angle, so the simulation and the metrics treat both alike.
-//! Longitudinal speed is prescribed: d vx / dt is an input (the speed profile), i.e. the
-//! longitudinal force is whatever the profile requires.
+//! Planar vehicle models behind one interface (the double-track model: double_track.hpp). The state
+//! is that of the kinetic model (Rajamani ch. 2; paper_notes §9): position of the centre of gravity
+//! (CG), heading, and the body-frame velocity and yaw rate. The kinematic model uses the same
+//! state, with vy and r fixed algebraically by the steering angle, so the simulation and the
+//! metrics treat both alike. Longitudinal speed is prescribed: d vx / dt is an input (the speed
+//! profile), i.e. the longitudinal force is whatever the profile requires.
 
 #include <array>
 
@@ -22,13 +22,17 @@ struct VehicleState {
   double vx_mps = 0.0;          //!< longitudinal velocity in the body frame [m/s]
   double vy_mps = 0.0;          //!< lateral velocity of the CG in the body frame [m/s]
   double yaw_rate_radps = 0.0;  //!< r = d psi / dt [rad/s]
+  //! Roll angle phi of the body about the roll axis, positive to the right (outward in a left
+  //! turn) [rad]; the single-track models leave it and its rate at 0 (double_track.hpp).
+  double roll_rad = 0.0;
+  double roll_rate_radps = 0.0;  //!< d phi / dt [rad/s]
 
-  static constexpr int size = 6;
+  static constexpr int size = 8;
   std::array<double, size> to_array() const noexcept {
-    return {x_m, y_m, heading_rad, vx_mps, vy_mps, yaw_rate_radps};
+    return {x_m, y_m, heading_rad, vx_mps, vy_mps, yaw_rate_radps, roll_rad, roll_rate_radps};
   }
   static VehicleState from_array(const std::array<double, size>& a) noexcept {
-    return {a[0], a[1], a[2], a[3], a[4], a[5]};
+    return {a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7]};
   }
 };
 

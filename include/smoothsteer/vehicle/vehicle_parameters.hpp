@@ -9,6 +9,7 @@
 #include <string>
 
 #include "smoothsteer/validation.hpp"
+#include "smoothsteer/vehicle/double_track_parameters.hpp"
 
 namespace smoothsteer {
 
@@ -30,14 +31,15 @@ std::optional<Violation> tire_violation(const char* owner, const char* prefix,
                                         const TireParameters& tire) noexcept;
 
 struct VehicleParameters {
-  double mass_kg = 1093.3;                //!< m [kg]
-  double yaw_inertia_kgm2 = 1791.6;       //!< Iz [kg m^2]
-  double cg_to_front_axle_m = 1.156;      //!< lf [m]
-  double cg_to_rear_axle_m = 1.422;       //!< lr [m]
-  double cg_height_m = 0.614;             //!< h [m]; documented, unused by the planar model
-  double gravity_mps2 = 9.81;             //!< g [m/s^2]
-  TireParameters front_tire;              //!< lumped front axle
-  TireParameters rear_tire;               //!< lumped rear axle
+  double mass_kg = 1093.3;            //!< m [kg]
+  double yaw_inertia_kgm2 = 1791.6;   //!< Iz [kg m^2]
+  double cg_to_front_axle_m = 1.156;  //!< lf [m]
+  double cg_to_rear_axle_m = 1.422;   //!< lr [m]
+  double cg_height_m = 0.614;  //!< h [m]; the single-track models do not use it, the double-track
+                               //!< model rolls and pitches the load about it
+  double gravity_mps2 = 9.81;  //!< g [m/s^2]
+  TireParameters front_tire;   //!< lumped front axle
+  TireParameters rear_tire;    //!< lumped rear axle
   double max_steering_angle_rad = 1.066;  //!< |delta| limit of the steering system [rad]
   double max_steering_rate_radps = 0.4;   //!< |d delta/dt| limit of the steering system [rad/s]
   //! |d2 delta/dt2| limit of the steering system [rad/s^2]; +inf = none given. Not enforced by
@@ -49,6 +51,9 @@ struct VehicleParameters {
   double kinetic_above_mps = 2.0;
   //! Time constant [s] with which vy and r relax to their kinematic values in the blend region.
   double kinematic_relaxation_s = 0.02;
+  //! What the double-track model needs besides (double_track_parameters.hpp); absent: the
+  //! vehicle runs on the single-track models only.
+  std::optional<DoubleTrackParameters> double_track;
 
   double wheelbase_m() const noexcept { return cg_to_front_axle_m + cg_to_rear_axle_m; }
   //! Static axle loads Fz_f = m g lr / L and Fz_r = m g lf / L [N].
