@@ -153,14 +153,15 @@ def mountain_hairpins():
     # that design, g (e + f) = 3.04 m/s^2, then sets the hairpin speed sqrt(3.04 * 12) = 6 m/s.
     r_min = aashto_min_radius(40.0, 0.08, 0.23)
     lay = Layout().line(60.0)
-    lay.bend(-50.0, math.radians(40.0), 25.0, 25.0).line(40.0)
-    lay.bend(12.0, math.pi + math.radians(40.0), 8.0, 8.0).line(70.0)  # hairpin left
-    lay.bend(-12.0, math.pi, 8.0, 8.0).line(70.0)  # hairpin right
-    lay.bend(45.0, math.radians(30.0), 22.5, 22.5).line(50.0)
+    lay.bend(50.0, math.radians(30.0), 25.0, 25.0).line(60.0)
+    lay.bend(12.0, math.pi, 8.0, 8.0).line(60.0)  # hairpin left: the legs 24 m apart
+    lay.bend(-12.0, math.pi, 8.0, 8.0).line(60.0)  # hairpin right
+    lay.bend(-45.0, math.radians(30.0), 22.5, 22.5).line(50.0)
     design = [
         "Mountain road, design speed 40 km/h (11.1 m/s): AASHTO eq. 3-8 with e = 0.08, f = 0.23",
-        "gives R_min = %.0f m; curves R = 50 m and 45 m (A = R / 2). Two hairpins of R = 12 m" % r_min,
-        "(220 and 180 deg), clothoids A = 8 m (R/3 <= A <= R; L = 5.3 m). Speed limited by",
+        "gives R_min = %.0f m; curves R = 50 m left and 45 m right (A = R / 2), two hairpins of" % r_min,
+        "R = 12 m (180 deg left, then right: three parallel legs of 60 m, 24 m apart), clothoids",
+        "A = 8 m (R/3 <= A <= R; L = 5.3 m). Speed limited by",
         "g (e + f) = 3.04 m/s^2: 6.0 m/s (22 km/h) in the hairpins.",
     ]
     write("scenarios/roads/mountain_hairpins.yaml", "mountain_hairpins",
