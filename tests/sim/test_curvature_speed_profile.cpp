@@ -58,11 +58,18 @@ TEST(CurvatureSpeedProfile, KeepsItsLimitsAndIsTheLargestSuchProfile) {
     for (std::size_t i = 0; i < v.size(); ++i) {
       const double s = ds * static_cast<double>(i);
       // The bound uses the largest |kappa| within one spacing: check it at s and around it.
-      double kappa = 0.0;
-      for (double d = -ds; d <= ds + 1e-12; d += ds / 16.0) {
-        kappa = std::max(kappa,
-                         std::abs(path.evaluate(std::clamp(s + d, 0.0, path.length())).curvature));
-      }
+      // (The profile books a jump at its nearest sample of ds / 8, so for the maximality check
+      // below the window reaches ds / 16 farther.)
+      auto largest_curvature = [&](double reach) {
+        double kappa = 0.0;
+        for (double d = -reach; d <= reach + 1e-12; d += ds / 16.0) {
+          kappa = std::max(
+              kappa, std::abs(path.evaluate(std::clamp(s + d, 0.0, path.length())).curvature));
+        }
+        return kappa;
+      };
+      const double kappa = largest_curvature(ds);
+      const double kappa_wide = largest_curvature(ds + ds / 16.0);
       ASSERT_LE(v[i], limits.max_speed_mps * (1 + 1e-12)) << "i " << i;
       ASSERT_LE(v[i] * v[i] * kappa, limits.max_lateral_acceleration_mps2 * (1 + 1e-9))
           << "i " << i;
@@ -73,8 +80,9 @@ TEST(CurvatureSpeedProfile, KeepsItsLimitsAndIsTheLargestSuchProfile) {
       }
       // Maximal: the point sits on its own limit, or the acceleration from the previous point or
       // the braking to the next one is at its bound.
-      const double own = kappa > 0.0 ? std::sqrt(limits.max_lateral_acceleration_mps2 / kappa)
-                                     : limits.max_speed_mps;
+      const double own = kappa_wide > 0.0
+                             ? std::sqrt(limits.max_lateral_acceleration_mps2 / kappa_wide)
+                             : limits.max_speed_mps;
       bool active = v[i] >= std::min(own, limits.max_speed_mps) * (1 - 1e-3);
       if (i == 0 && limits.initial_speed_mps) {
         active = active || v[0] >= *limits.initial_speed_mps * (1 - 1e-9);

@@ -31,7 +31,7 @@ struct SpeedProfile {
   //! When set (>= 2 knots, times increasing from 0), the profile is this table instead of the
   //! ramp: speed linear in time between knots (constant acceleration), the last speed after the
   //! last knot. initial_speed_mps must equal the first knot's speed.
-  std::shared_ptr<const std::vector<SpeedKnot>> knots;
+  std::shared_ptr<const std::vector<SpeedKnot>> knots{};
 
   //! Duration of the ramp [s] (0 for a constant or tabulated profile).
   double ramp_duration_s() const noexcept {
