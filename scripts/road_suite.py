@@ -4,13 +4,14 @@
 Each road is laid out from straights, clothoids and arcs the way the road-design guidelines do:
   * minimum radius from the design speed, R_min = V^2 / (127 (e + f)) (V in km/h, e the
     superelevation, f the side friction factor; AASHTO, "A Policy on Geometric Design of
-    Highways and Streets", 7th ed. 2018, eq. 3-8 and table 3-7 for f);
-  * clothoid parameter A with R / 3 <= A <= R (German guidelines RAL 2012, section 5.2.3, and
-    RAA 2008, section 5.2.3: the clothoid length L = A^2 / R);
+    Highways and Streets", 7th ed. 2018, section 3.3: the simplified curve formula, f from its
+    table of side friction factors for open highways);
+  * clothoid parameter A with R / 3 <= A <= R (German guidelines RAL 2012 for rural roads and
+    RAA 2008 for motorways: the clothoid length L = A^2 / R);
   * the speed profile from the path's curvature (speed.profile: curvature): the design speed on
     the straights, v <= sqrt(a_lat / |kappa|) with a_lat = g (e + f) of the design, accelerating
     at <= 1 m/s^2 and braking at <= 2 m/s^2 (well below the 3.4 m/s^2 that AASHTO's stopping
-    sight distance assumes, section 3.2.2).
+    sight distance assumes, section 3.2).
 The numbers of each design are in the comments of its file. Run from the repository root:
 
     /usr/bin/python3 scripts/road_suite.py
@@ -23,7 +24,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 
 
 def aashto_min_radius(speed_kmh, e, f):
-    """AASHTO eq. 3-8: R_min = V^2 / (127 (e + f)) [m]."""
+    """AASHTO 2018 section 3.3: R_min = V^2 / (127 (e + f)) [m]."""
     return speed_kmh**2 / (127.0 * (e + f))
 
 
@@ -137,8 +138,8 @@ def rural_80():
     lay.bend(-250.0, math.radians(45.0), 125.0, 125.0).line(120.0)
     lay.bend(400.0, math.radians(20.0), 200.0, 200.0).line(100.0)
     design = [
-        "Rural two-lane road, design speed 80 km/h (22.2 m/s). AASHTO Green Book (2018) eq. 3-8:",
-        "R_min = V^2 / (127 (e + f)) = %.0f m with e_max = 0.08, f = 0.14 (table 3-7)." % r_min,
+        "Rural two-lane road, design speed 80 km/h (22.2 m/s). AASHTO Green Book (2018, 3.3):",
+        "R_min = V^2 / (127 (e + f)) = %.0f m with e_max = 0.08, f = 0.14 (its f table)." % r_min,
         "Curves R = 300 m left 35 deg, R = 250 m right 45 deg, R = 400 m left 20 deg, each",
         "entered and left through clothoids A = R / 2 (RAL 2012: R/3 <= A <= R, L = A^2 / R).",
         "Speed: the design speed, v <= sqrt(g (e + f) / |kappa|) (2.16 m/s^2: not binding).",
@@ -158,7 +159,7 @@ def mountain_hairpins():
     lay.bend(-12.0, math.pi, 8.0, 8.0).line(60.0)  # hairpin right
     lay.bend(-45.0, math.radians(30.0), 22.5, 22.5).line(50.0)
     design = [
-        "Mountain road, design speed 40 km/h (11.1 m/s): AASHTO eq. 3-8 with e = 0.08, f = 0.23",
+        "Mountain road, design speed 40 km/h (11.1 m/s): AASHTO (3.3) with e = 0.08, f = 0.23",
         "gives R_min = %.0f m; curves R = 50 m left and 45 m right (A = R / 2), two hairpins of" % r_min,
         "R = 12 m (180 deg left, then right: three parallel legs of 60 m, 24 m apart), clothoids",
         "A = 8 m (R/3 <= A <= R; L = 5.3 m). Speed limited by",
@@ -172,7 +173,7 @@ def mountain_hairpins():
 def motorway_exit():
     # Exit from a 100 km/h carriageway: a parallel deceleration lane, a diverging curve R = 300 m,
     # an egg-shaped clothoid into the loop R = 50 m (270 deg), clothoid out. Loop design speed
-    # 40 km/h (AASHTO table 10-?: e = 0.08, f = 0.23 -> R_min 41 m).
+    # 40 km/h (AASHTO 3.3: e = 0.08, f = 0.23 -> R_min 41 m).
     r_min = aashto_min_radius(40.0, 0.08, 0.23)
     lay = Layout().line(80.0)
     lay.clothoid(150.0, -1.0 / 300.0)
@@ -187,7 +188,7 @@ def motorway_exit():
         "100 km/h, a clothoid A = 150 m into R = 300 m right (8 deg), an egg-shaped clothoid",
         "A = 45 m from R = 300 m to R = 50 m, the loop R = 50 m (270 deg from the start in all),",
         "clothoid A = 30 m out (R/3 <= A <= R) and 60 m straight. Loop design speed 40 km/h:",
-        "AASHTO eq. 3-8 with e = 0.08, f = 0.23: R_min = %.0f m; a_lat = g (e + f) = 3.04 m/s^2," % r_min,
+        "AASHTO (3.3) with e = 0.08, f = 0.23: R_min = %.0f m; a_lat = g (e + f) = 3.04 m/s^2," % r_min,
         "so 12.3 m/s in the loop, braked down from 27.8 m/s at 2 m/s^2.",
     ]
     write("scenarios/roads/motorway_exit.yaml", "motorway_exit",
@@ -216,12 +217,12 @@ def roundabout():
     speed_circ = math.sqrt(G * 0.26 * circulate)
     design = [
         "Single-lane roundabout, through movement (NCHRP Report 672, 'Roundabouts: An",
-        "Informational Guide', 2nd ed. 2010, section 6.7.1: the fastest vehicle path): entry",
+        "Informational Guide', 2nd ed. 2010, chapter 6: the fastest vehicle path): entry",
         "curve R = 25 m right, circulating R = 18 m left around the central island (%.0f deg), exit"
         % math.degrees(middle),
         "R = 25 m right; clothoids A = 12.5 m from and to the approach straights and A = 10 m",
         "through zero curvature between the reverse curves. Approach 50 km/h; speed from",
-        "AASHTO eq. 3-8 with e = -0.02 (outward cross slope) and f = 0.28 (30 km/h):",
+        "AASHTO (3.3) with e = -0.02 (outward cross slope) and f = 0.28 (30 km/h):",
         "a_lat = 0.26 g = 2.55 m/s^2, %.1f m/s (%.0f km/h) on the circle." % (speed_circ,
                                                                           speed_circ * 3.6),
     ]
@@ -238,9 +239,9 @@ def urban_turn():
     speed = math.sqrt(G * 0.32 * radius)
     design = [
         "Right turn at an urban intersection from a 50 km/h street: centre-line radius 10 m",
-        "(AASHTO 2018 section 9.6: the passenger-car design vehicle's minimum turning radius is",
-        "7.3 m), clothoids A = 5 m (R/3 <= A <= R; 2.5 m long). Turning speed from eq. 3-8 with",
-        "e = 0 and the low-speed f = 0.32 (AASHTO figure 3-6, 20 km/h): a_lat = 3.1 m/s^2,",
+        "(AASHTO 2018 section 2.1: the passenger-car design vehicle's minimum turning radius is",
+        "7.3 m), clothoids A = 5 m (R/3 <= A <= R; 2.5 m long). Turning speed from the 3.3 formula with",
+        "e = 0 and f = 0.32 (near AASHTO's low-speed urban value at 20 km/h, 3.3): a_lat = 3.1 m/s^2,",
         "%.1f m/s (%.0f km/h)." % (speed, speed * 3.6),
     ]
     write("scenarios/roads/urban_turn.yaml", "urban_turn",
