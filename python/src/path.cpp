@@ -119,9 +119,10 @@ void bind_path(py::module_& m) {
           },
           py::arg("point"), "Global closest-point projection of (x, y) [m]: a PathProjection.");
 
-  py::class_<PathBuilder>(m, "PathBuilder",
-                          "Builds a line/arc path piece by piece from a start pose: "
-                          "PathBuilder((0, 0), 0.0).line(10).arc(5, pi / 2).build().")
+  py::class_<PathBuilder>(
+      m, "PathBuilder",
+      "Builds a path of lines, arcs and clothoids piece by piece from a start pose: "
+      "PathBuilder((0, 0), 0.0).line(10).arc(5, pi / 2).build().")
       .def(py::init([](const py::object& start, double heading_rad) {
              return PathBuilder(to_vec2(start, "start"), heading_rad);
            }),
@@ -131,6 +132,10 @@ void bind_path(py::module_& m) {
       .def("arc", &PathBuilder::arc, py::arg("radius_m"), py::arg("angle_rad"),
            py::return_value_policy::reference_internal,
            "Appends an arc of radius_m [m] turning by angle_rad [rad] (> 0 left).")
+      .def("clothoid", &PathBuilder::clothoid, py::arg("length_m"), py::arg("curvature_end"),
+           py::return_value_policy::reference_internal,
+           "Appends a clothoid of length_m [m] whose curvature runs linearly from the current "
+           "end curvature to curvature_end [1/m] (> 0 left).")
       .def(
           "build",
           [](const PathBuilder& builder, bool closed) {

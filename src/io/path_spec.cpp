@@ -1,6 +1,7 @@
 // Path sections of scenario files: straight, circle, segments, lane_change, waypoints and
 // waypoints_csv (docs/scenarios.md).
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/waypoint_csv.hpp"
 #include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer::io {
 namespace {
@@ -25,6 +27,36 @@ double lane_change_y(double x) {
   const double z1 = shape / dx1 * (x - xs1) - shape / 2.0;
   const double z2 = shape / dx2 * (x - xs2) - shape / 2.0;
   return dy1 / 2.0 * (1.0 + std::tanh(z1)) - dy2 / 2.0 * (1.0 + std::tanh(z2));
+}
+
+//! A clothoid piece: from the curvature the previous piece ends with (0 at the start) to
+//! `end_curvature_per_m`, over `clothoid_m`, or over A^2 |k_end - k_start| for the clothoid
+//! parameter A = `clothoid_parameter_m` (A^2 = L / |delta kappa|, the road designer's measure).
+void add_clothoid(ConfigSection& piece, PathBuilder& builder) {
+  if (piece.has("clothoid_m") && piece.has("clothoid_parameter_m")) {
+    piece.fail("clothoid_parameter_m", "give either clothoid_m or clothoid_parameter_m, not both");
+  }
+  const double end = piece.required_number("end_curvature_per_m", {-10.0, 10.0});
+  const double start = builder.end_curvature();
+  if (end == start) {
+    piece.fail("end_curvature_per_m",
+               "must differ from the curvature the previous piece ends with, " +
+                   exact_number(start) + " 1/m (a clothoid changes it)");
+  }
+  double length = 0.0;
+  if (piece.has("clothoid_m")) {
+    length = piece.required_number("clothoid_m", Range::positive());
+  } else {
+    const double parameter = piece.required_number("clothoid_parameter_m", Range::positive());
+    length = parameter * parameter * std::abs(end - start);
+  }
+  const double turning = std::max(std::abs(start), std::abs(end)) * length;
+  if (!(turning <= 4.0 * 3.141592653589793)) {
+    piece.fail(piece.has("clothoid_m") ? "clothoid_m" : "clothoid_parameter_m",
+               "gives max(|curvature|) * length = " + exact_number(turning) +
+                   " rad; at most 4 pi (two full turns)");
+  }
+  builder.clothoid(length, end);
 }
 
 }  // namespace
@@ -52,7 +84,9 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
       const YAML::Node pieces = c.raw("pieces");
       if (!pieces || !pieces.IsSequence() || pieces.size() == 0) {
         c.fail("pieces",
-               "expected a non-empty list of {line_m: L} or {arc_radius_m: R, arc_angle_rad: A}");
+               "expected a non-empty list of {line_m: L}, {arc_radius_m: R, arc_angle_rad: A}, "
+               "{clothoid_m: L, end_curvature_per_m: k} or "
+               "{clothoid_parameter_m: A, end_curvature_per_m: k}");
       }
       YAML::Node resolved(YAML::NodeType::Sequence);
       for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -60,6 +94,8 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
                             c.file());
         if (piece.has("line_m")) {
           builder.line(piece.number("line_m", 0.0, Range::positive()));
+        } else if (piece.has("clothoid_m") || piece.has("clothoid_parameter_m")) {
+          add_clothoid(piece, builder);
         } else {
           const double radius = piece.required_number("arc_radius_m", Range::positive());
           const double angle = piece.required_number("arc_angle_rad", {-6.3, 6.3});

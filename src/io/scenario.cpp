@@ -4,8 +4,10 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 
 #include "smoothsteer/io/controller_registry.hpp"
+#include "smoothsteer/sim/curvature_speed_profile.hpp"
 
 namespace smoothsteer::io {
 namespace {
@@ -207,14 +209,33 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
       actuator.number("max_rate_radps", s.vehicle.max_steering_rate_radps, Range::positive());
   actuator.finish();
 
+  // Speed: a ramp in time (default), or limited by the path's curvature and by longitudinal
+  // acceleration (curvature_speed_profile.hpp), computed once the path is built.
   ConfigSection speed = c.section("speed");
-  s.speed.initial_speed_mps = speed.number("initial_mps", 10.0, {0.0, 100.0, true, false});
-  s.speed.final_speed_mps =
-      speed.number("final_mps", s.speed.initial_speed_mps, {0.0, 100.0, true, false});
-  s.speed.acceleration_mps2 = speed.number("acceleration_mps2", 0.0, {0.0, 20.0});
-  s.speed.start_time_s = speed.number("start_time_s", 0.0, Range::non_negative());
-  speed.finish();
-  check(speed, s.speed);
+  std::optional<CurvatureSpeedLimits> curvature_limits;
+  if (speed.text("profile", "ramp", {"ramp", "curvature"}) == "ramp") {
+    s.speed.initial_speed_mps = speed.number("initial_mps", 10.0, {0.0, 100.0, true, false});
+    s.speed.final_speed_mps =
+        speed.number("final_mps", s.speed.initial_speed_mps, {0.0, 100.0, true, false});
+    s.speed.acceleration_mps2 = speed.number("acceleration_mps2", 0.0, {0.0, 20.0});
+    s.speed.start_time_s = speed.number("start_time_s", 0.0, Range::non_negative());
+    speed.finish();
+    check(speed, s.speed);
+  } else {
+    CurvatureSpeedLimits& l = curvature_limits.emplace();
+    l.max_speed_mps = speed.required_number("max_mps", {0.0, 100.0, true, false});
+    l.max_lateral_acceleration_mps2 =
+        speed.required_number("max_lateral_acceleration_mps2", {0.0, 20.0, true, false});
+    l.max_acceleration_mps2 =
+        speed.number("max_acceleration_mps2", l.max_acceleration_mps2, {0.0, 20.0, true, false});
+    l.max_deceleration_mps2 =
+        speed.number("max_deceleration_mps2", l.max_deceleration_mps2, {0.0, 20.0, true, false});
+    if (speed.has("initial_mps")) {
+      l.initial_speed_mps = speed.required_number("initial_mps", {0.0, 100.0, true, false});
+    }
+    speed.finish();
+    check(speed, l);
+  }
 
   ConfigSection sim = c.section("simulation");
   SimulationParameters& p = s.simulation;
@@ -288,6 +309,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   ConfigSection path = c.section("path");
   s.path = make_path(path, directory);
   path.finish();
+  if (curvature_limits) s.speed = curvature_speed_profile(*s.path, *curvature_limits);
 
   s.controller = c.raw("controller");
   YAML::Node resolved_controller;

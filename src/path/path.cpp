@@ -67,6 +67,24 @@ void validate_segment(const PathSegment& segment, std::size_t index) {
   if (segment.kind == PathSegment::Kind::arc && segment.curvature == 0.0) {
     fail(std::string(where) + ": " + name + ".curvature = 0 must be nonzero for an arc");
   }
+  require_finite(where, name + ".curvature_rate", segment.curvature_rate);
+  if (segment.kind == PathSegment::Kind::clothoid) {
+    if (segment.curvature_rate == 0.0) {
+      fail(std::string(where) + ": " + name +
+           ".curvature_rate = 0 must be nonzero for a clothoid (else it is a line or an arc)");
+    }
+    const double turning =
+        std::max(std::abs(segment.curvature), std::abs(segment.end_curvature())) * segment.length;
+    if (!(turning <= detail::max_clothoid_turning_rad)) {
+      fail(std::string(where) + ": " + name + " max(|curvature|, |end curvature|) * length = " +
+           detail::format_number(turning) + " rad must be <= 4 pi (two full turns)");
+    }
+    return;
+  }
+  if (segment.curvature_rate != 0.0) {
+    fail(std::string(where) + ": " + name + ".curvature_rate = " +
+         detail::format_number(segment.curvature_rate) + " must be 0 for a line or an arc");
+  }
   if (segment.kind == PathSegment::Kind::line && segment.curvature != 0.0) {
     fail(std::string(where) + ": " + name +
          ".curvature = " + detail::format_number(segment.curvature) + " must be 0 for a line");
@@ -186,6 +204,9 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
         const Vec2 forward = unit_from_heading(segment.start_heading_rad);
         bound = {segment.start + (1.0 / segment.curvature) * Vec2{-forward.y, forward.x}, radius};
       }
+    } else if (segment.kind == PathSegment::Kind::clothoid) {
+      path.max_abs_curvature_ = std::max({path.max_abs_curvature_, std::abs(segment.curvature),
+                                          std::abs(segment.end_curvature())});
     } else if (segment.kind == PathSegment::Kind::cubic) {
       // Sampled maximum: exact at the samples, a close estimate in between.
       constexpr int kSamples = 32;
@@ -219,9 +240,7 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   // Curvature steps at the joints, and against the straight extensions of an open path.
   const auto& pieces = path.segments_;
   auto start_curvature = [](const PathSegment& p) { return p.evaluate_parameter(0.0).curvature; };
-  auto end_curvature = [](const PathSegment& p) {
-    return p.evaluate_parameter(p.parameter_end()).curvature;
-  };
+  auto end_curvature = [](const PathSegment& p) { return p.end_curvature(); };
   auto add_jump = [&path](double at, double before, double after) {
     if (std::abs(after - before) > min_curvature_jump)
       path.curvature_jumps_.push_back({at, before, after});

@@ -1,7 +1,8 @@
-//! PathBuilder: validated line/arc sequences.
+//! PathBuilder: validated sequences of lines, arcs and clothoids.
 
 #include "smoothsteer/path/path_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -46,6 +47,24 @@ PathBuilder& PathBuilder::arc(double radius_m, double angle_rad) {
   return *this;
 }
 
+PathBuilder& PathBuilder::clothoid(double length_m, double curvature_end) {
+  constexpr const char* where = "PathBuilder::clothoid";
+  if (!std::isfinite(length_m) || !(length_m > 0.0)) {
+    fail(where, "length_m", length_m, "finite and > 0");
+  }
+  if (!std::isfinite(curvature_end) || curvature_end == curvature_) {
+    fail(where, "curvature_end", curvature_end,
+         ("finite and differ from the current end curvature " + detail::format_number(curvature_))
+             .c_str());
+  }
+  const double turning = std::max(std::abs(curvature_), std::abs(curvature_end)) * length_m;
+  if (!(turning <= detail::max_clothoid_turning_rad)) {
+    fail(where, "max(|curvature|) * length_m", turning, "<= 4 pi (two full turns)");
+  }
+  append(PathSegment::make_clothoid(position_, heading_rad_, curvature_, curvature_end, length_m));
+  return *this;
+}
+
 Path PathBuilder::build(bool closed) const {
   return Path::from_segments(segments_, closed);
 }
@@ -57,6 +76,7 @@ void PathBuilder::append(const PathSegment& segment) {
   segments_.push_back(segment);
   position_ = end.position;
   heading_rad_ = end.heading_rad;
+  curvature_ = segment.end_curvature();
 }
 
 }  // namespace smoothsteer

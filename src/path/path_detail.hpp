@@ -23,13 +23,25 @@ double cubic_parameter_at(const PathSegment& segment, double local_s) noexcept;
 SegmentProjection cubic_project(const PathSegment& segment, Vec2 query, double warm_parameter,
                                 bool exhaustive, bool with_arc_length) noexcept;
 
+// Clothoid segment internals (clothoid_segment.cpp). The local parameter is the arc length.
+//! Most brackets of the clothoid's global closest-point search (its turning bound in
+//! Path::from_segments keeps below it).
+inline constexpr int max_clothoid_brackets = 64;
+//! Largest max(|kappa_start|, |kappa_end|) * length of a clothoid segment [rad].
+inline constexpr double max_clothoid_turning_rad = 12.566370614359172;  // two full turns
+PathPoint clothoid_point(const PathSegment& segment, double s) noexcept;
+SegmentProjection clothoid_project(const PathSegment& segment, Vec2 query, double warm_parameter,
+                                   bool exhaustive) noexcept;
+
 //! The tightest cheap box around `segment` inside `box` (which must contain it): exact for
 //! lines, the control-point hull of the Bezier form for cubics, `box` itself for arcs.
 SegmentBox tighten_box(const PathSegment& segment, const SegmentBox& box) noexcept;
 
 //! A capsule containing `segment`: the chord and the largest distance of the Bezier control
 //! points from it (cubics), the chord and the sagitta (arcs up to a half turn; longer arcs get
-//! their circle's disk), the segment itself (lines).
+//! their circle's disk), the segment itself (lines), the chord and the half minor axis of the
+//! ellipse with the chord's ends as foci and the length as major axis (clothoids: a curve of
+//! length L between two points lies in that ellipse).
 SegmentCapsule segment_capsule(const PathSegment& segment) noexcept;
 
 //! Signed distance with the side of `offset` relative to `tangent` (left positive). A point

@@ -122,6 +122,21 @@ PathSegment PathSegment::make_arc(Vec2 from, double heading_rad, double curvatur
   return segment;
 }
 
+PathSegment PathSegment::make_clothoid(Vec2 from, double heading_rad, double curvature_start,
+                                       double curvature_end, double length_m) noexcept {
+  PathSegment segment = make_line(from, heading_rad, length_m);
+  segment.kind = Kind::clothoid;
+  segment.curvature = curvature_start;
+  segment.curvature_rate = (curvature_end - curvature_start) / length_m;
+  return segment;
+}
+
+double PathSegment::end_curvature() const noexcept {
+  if (kind == Kind::clothoid) return curvature + curvature_rate * length;
+  if (kind == Kind::cubic) return detail::cubic_point(*this, t_end).curvature;
+  return curvature;
+}
+
 PathSegment PathSegment::make_cubic(const std::array<double, 4>& x, const std::array<double, 4>& y,
                                     double t_range) noexcept {
   PathSegment segment;
@@ -142,6 +157,7 @@ PathPoint PathSegment::evaluate_at(double local_s) const noexcept {
 PathPoint PathSegment::evaluate_parameter(double parameter) const noexcept {
   const double clamped = std::clamp(parameter, 0.0, parameter_end());
   if (kind == Kind::cubic) return detail::cubic_point(*this, clamped);
+  if (kind == Kind::clothoid) return detail::clothoid_point(*this, clamped);
   return line_or_arc_point(*this, clamped);
 }
 
@@ -166,6 +182,8 @@ SegmentProjection PathSegment::project_local(Vec2 query, double warm_parameter, 
                               : project_line(*this, query);
     case Kind::cubic:
       return detail::cubic_project(*this, query, warm_parameter, exhaustive, with_arc_length);
+    case Kind::clothoid:
+      return detail::clothoid_project(*this, query, warm_parameter, exhaustive);
   }
   return project_line(*this, query);
 }

@@ -87,6 +87,14 @@ SegmentCapsule detail::segment_capsule(const PathSegment& segment) noexcept {
   const Vec2 start = segment.evaluate_parameter(0.0).position;
   const Vec2 end = segment.evaluate_parameter(segment.parameter_end()).position;
   if (segment.kind == PathSegment::Kind::line) return {start, end, 0.0};
+  if (segment.kind == PathSegment::Kind::clothoid) {
+    // Half the minor axis of the ellipse sqrt((L/2)^2 - (c/2)^2), factored against
+    // cancellation, plus a rounding margin.
+    const double chord = norm(end - start);
+    const double gap = std::max(segment.length - chord, 0.0);
+    return {start, end,
+            0.5 * std::sqrt(gap * (segment.length + chord)) + 1e-9 + 1e-12 * segment.length};
+  }
   if (segment.kind == PathSegment::Kind::arc) {
     const double radius = 1.0 / std::abs(segment.curvature);
     const double sweep = std::abs(segment.curvature) * segment.length;

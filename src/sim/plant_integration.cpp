@@ -154,7 +154,10 @@ void solve_piece(const PlantContext& c, double origin, double from, double to,
 
 //! Instants inside a period where the right-hand side is not smooth (offsets from its start).
 struct Kinks {
-  std::array<double, ExactActuatorPeriod::max_segments + 2> at{};
+  //! Room for the actuator's mode changes, the ramp's two ends and up to 16 knots of a
+  //! tabulated speed profile (more are not split at: their acceleration is then taken at the
+  //! middle of the piece).
+  std::array<double, ExactActuatorPeriod::max_segments + 2 + 16> at{};
   int count = 0;
   void add(double offset) noexcept {
     if (count < static_cast<int>(at.size())) at[static_cast<std::size_t>(count++)] = offset;
@@ -170,6 +173,12 @@ void solve_adaptive(const PlantContext& c, double t0, double h, const DeltaOf& d
   if (c.speed.ramp_duration_s() > 0.0) {
     kinks.add(c.speed.start_time_s - t0);
     kinks.add(c.speed.start_time_s + c.speed.ramp_duration_s() - t0);
+  }
+  if (c.speed.knots) {  // the knots of a tabulated profile inside the period
+    const std::vector<SpeedKnot>& knots = *c.speed.knots;
+    std::size_t i = c.speed.knot_interval(t0);
+    if (i == SpeedProfile::no_interval) i = t0 < knots.front().time_s ? 0 : knots.size();
+    for (++i; i < knots.size() && knots[i].time_s < t0 + h; ++i) kinks.add(knots[i].time_s - t0);
   }
   std::sort(kinks.at.begin(), kinks.at.begin() + kinks.count);
   // Kinks closer than a nanosecond to an end or to each other are one (k * T rounds off).

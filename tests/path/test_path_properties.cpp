@@ -81,14 +81,38 @@ RandomPath random_closed(Random& rng) {
           0.3 * radius};
 }
 
+//! A road: straights and bends of clothoid, arc, clothoid (or clothoids straight into the
+//! next bend), the heading within +-1 rad of the start.
+RandomPath random_clothoid_road(Random& rng) {
+  const double base = rng.uniform(-pi, pi);
+  PathBuilder builder({rng.uniform(-10, 10), rng.uniform(-10, 10)}, base);
+  double min_radius = std::numeric_limits<double>::infinity();
+  const int bends = rng.integer(1, 5);
+  for (int i = 0; i < bends; ++i) {
+    if (rng.coin()) builder.line(rng.uniform(1.0, 10.0));
+    const double turned = wrap_angle(builder.end_heading_rad() - base);
+    const double radius = rng.uniform(3.0, 20.0);
+    const double angle = rng.uniform(0.1, 0.9);
+    const double turn = std::abs(turned + angle) > 1.0 ? -1.0 : 1.0;   // keep |turned| <= 1 rad
+    const double transition = rng.uniform(0.1, 0.8) * angle * radius;  // both turn T / (2 R)
+    builder.clothoid(transition, turn / radius);
+    if (rng.coin()) builder.arc(radius, turn * (angle - transition / radius));
+    builder.clothoid(transition, 0.0);
+    min_radius = std::min(min_radius, radius);
+  }
+  return {builder.build(), std::min(1.0, 0.3 * min_radius)};
+}
+
 RandomPath random_path(Random& rng, int case_index) {
-  switch (case_index % 3) {
+  switch (case_index % 4) {
     case 0:
       return random_spline(rng);
     case 1:
       return random_line_arc(rng);
-    default:
+    case 2:
       return random_closed(rng);
+    default:
+      return random_clothoid_road(rng);
   }
 }
 

@@ -44,14 +44,26 @@ Path random_folding_path(Random& rng, int kind) {
       }
       return Path::from_waypoints(points);
     }
-    case 1: {  // lines and arcs turning by up to 2 pi in total
+    case 1: {  // lines, arcs and clothoids (up to 2.5 rad each) turning by up to 2 pi in total
       PathBuilder builder(start, heading);
       const int pieces = rng.integer(1, 7);
       for (int i = 0; i < pieces; ++i) {
-        if (rng.coin()) {
+        const int piece = rng.integer(0, 2);
+        if (piece == 0) {
           builder.line(rng.uniform(1.0, 30.0));
-        } else {
+        } else if (piece == 1) {
           builder.arc(rng.uniform(2.0, 15.0), rng.uniform(-3.0, 3.0) + 1e-3);
+        } else {
+          // Curvature from the current end to a random one within 1/2 1/m: a spiral that can
+          // fold around the query.
+          const double end = rng.coin() ? 0.0 : rng.uniform(-0.5, 0.5);
+          const double largest = std::max(std::abs(end), std::abs(builder.end_curvature()));
+          const double length = rng.uniform(1.0, 30.0);
+          if (end != builder.end_curvature()) {
+            builder.clothoid(largest > 0.0 ? std::min(length, 2.5 / largest) : length, end);
+          } else {
+            builder.line(length);
+          }
         }
       }
       return builder.build();
@@ -97,7 +109,17 @@ Path random_gentle_path(Random& rng) {
       double angle = rng.uniform(0.1, 1.0);
       if (std::abs(turned + angle) > 1.2) angle = -angle;
       turned += angle;
-      builder.arc(rng.uniform(3.0, 15.0), angle);
+      const double radius = rng.uniform(3.0, 15.0);
+      if (rng.coin()) {
+        builder.arc(radius, angle);
+      } else {  // the same turn through clothoid, arc, clothoid (each clothoid turns T / (2 R))
+        const double transition = rng.uniform(0.1, 0.9) * std::abs(angle) * radius;
+        const double turn = angle > 0.0 ? 1.0 : -1.0;
+        if (builder.end_curvature() != 0.0) builder.line(1.0);  // start straight
+        builder.clothoid(transition, turn / radius)
+            .arc(radius, angle - turn * transition / radius)
+            .clothoid(transition, 0.0);
+      }
     }
   }
   return builder.build();

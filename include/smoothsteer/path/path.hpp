@@ -1,7 +1,7 @@
 #pragma once
 //! \file path.hpp
-//! Reference paths: straight lines, line/arc sequences, circles and C2 cubic splines through
-//! waypoints, with warm-started closest-point projection.
+//! Reference paths: straight lines, sequences of lines, arcs and clothoids, circles and C2
+//! cubic splines through waypoints, with warm-started closest-point projection.
 //!
 //! Conventions
 //!  - Arc length s [m] starts at 0 at the first point.

@@ -1,7 +1,11 @@
 #pragma once
 //! \file path_builder.hpp
-//! Builds G1-continuous line/arc paths piece by piece from a start pose, like a turtle:
-//!   Path p = PathBuilder({0, 0}, 0.0).line(10).arc(5, pi / 2).line(10).build();
+//! Builds G1-continuous paths of lines, arcs and clothoids piece by piece from a start pose,
+//! like a turtle:
+//!   Path p = PathBuilder({0, 0}, 0.0).line(10).clothoid(5, 0.2).arc(5, pi / 2)
+//!                .clothoid(5, 0.0).line(10).build();
+//! A clothoid starts at the curvature the previous piece ends with (0 before the first piece),
+//! so its joints have no curvature jump.
 
 #include <vector>
 
@@ -22,12 +26,20 @@ class PathBuilder {
   //! unless the radius is finite and > 0 and the angle is finite and nonzero.
   PathBuilder& arc(double radius_m, double angle_rad);
 
+  //! Appends a clothoid of length `length_m` whose curvature runs linearly from the current
+  //! end curvature to `curvature_end` [1/m] (> 0 turning left). Throws unless the length is
+  //! finite and > 0, the end curvature is finite and differs from the current one, and
+  //! max(|curvature|) * length <= 4 pi.
+  PathBuilder& clothoid(double length_m, double curvature_end);
+
   //! The path so far. With `closed`, the end must meet the start (see Path::from_segments).
   Path build(bool closed = false) const;
 
   //! End pose of the pieces so far (the start pose before the first piece).
   Vec2 end_position() const noexcept { return position_; }
   double end_heading_rad() const noexcept { return heading_rad_; }
+  //! Curvature at the end of the pieces so far (0 before the first piece) [1/m].
+  double end_curvature() const noexcept { return curvature_; }
 
  private:
   void append(const PathSegment& segment);
@@ -35,6 +47,7 @@ class PathBuilder {
   std::vector<PathSegment> segments_;
   Vec2 position_;
   double heading_rad_ = 0.0;
+  double curvature_ = 0.0;
 };
 
 }  // namespace smoothsteer

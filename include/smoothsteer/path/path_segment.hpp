@@ -1,6 +1,7 @@
 #pragma once
 //! \file path_segment.hpp
-//! One piece of a reference path: a straight line, a circular arc or a parametric cubic.
+//! One piece of a reference path: a straight line, a circular arc, a clothoid (Euler spiral:
+//! curvature linear in arc length) or a parametric cubic.
 //! Paths (path.hpp) are G1-continuous sequences of these. Include path.hpp to use
 //! evaluate_at(), whose PathPoint result is defined there.
 
@@ -42,21 +43,23 @@ struct SegmentCapsule {
   double radius = 0.0;
 };
 
-//! A plain segment record. Lines and arcs are described by their start pose and curvature
-//! (local parameter = local arc length); cubics by polynomial coefficients
+//! A plain segment record. Lines, arcs and clothoids are described by their start pose and
+//! curvature, clothoids also by the curvature's rate along s (local parameter = local arc
+//! length); cubics by polynomial coefficients
 //! x(t) = x[0] + x[1] t + x[2] t^2 + x[3] t^3 (same for y), t in [0, t_end], which the spline
 //! fit parametrizes by chord length so that |p'(t)| stays close to 1.
 struct PathSegment {
-  enum class Kind { line, arc, cubic };
+  enum class Kind { line, arc, cubic, clothoid };
 
   Kind kind = Kind::line;
   double s0 = 0.0;      //!< arc length of the segment start along the path [m]
   double length = 0.0;  //!< arc length of the segment [m]
 
-  // Line and arc geometry.
+  // Line, arc and clothoid geometry.
   Vec2 start;                      //!< start point [m]
   double start_heading_rad = 0.0;  //!< tangent at the start [rad]
-  double curvature = 0.0;          //!< [1/m], 0 for lines, positive = turning left
+  double curvature = 0.0;       //!< [1/m] (at the start, for a clothoid), 0 for lines, > 0 = left
+  double curvature_rate = 0.0;  //!< d curvature / ds of a clothoid [1/m^2], 0 otherwise
 
   // Cubic geometry.
   std::array<double, 4> x_coefficients{};  //!< x(t) polynomial, lowest order first
@@ -67,12 +70,19 @@ struct PathSegment {
   //! `curvature_per_m` must be nonzero; the arc turns by curvature_per_m * length_m [rad].
   static PathSegment make_arc(Vec2 from, double heading_rad, double curvature_per_m,
                               double length_m) noexcept;
+  //! A clothoid whose curvature runs linearly from `curvature_start` to `curvature_end` over
+  //! `length_m` (curvature_rate = (end - start) / length).
+  static PathSegment make_clothoid(Vec2 from, double heading_rad, double curvature_start,
+                                   double curvature_end, double length_m) noexcept;
   //! Computes `length` by quadrature.
   static PathSegment make_cubic(const std::array<double, 4>& x, const std::array<double, 4>& y,
                                 double t_range) noexcept;
 
   //! Upper end of the local parameter: `length` for lines and arcs, `t_end` for cubics.
   double parameter_end() const noexcept { return kind == Kind::cubic ? t_end : length; }
+
+  //! Curvature at the end of the segment [1/m].
+  double end_curvature() const noexcept;
 
   //! Point at local arc length `local_s` in [0, length] (clamped).
   PathPoint evaluate_at(double local_s) const noexcept;

@@ -1,0 +1,45 @@
+#pragma once
+//! \file curvature_speed_profile.hpp
+//! A speed profile from the path's curvature, as a driver or a road designer would set it:
+//! v(s) <= min(max_speed, sqrt(a_lat,max / |kappa(s)|)), then a forward pass that holds the
+//! acceleration to a_long,max and a backward pass that holds the braking to a_brake,max
+//! (v_{i+1}^2 <= v_i^2 + 2 a ds; the usual two-pass construction of minimum-time speed profiles,
+//! e.g. Lipp and Boyd, "Minimum-time speed optimisation over a fixed path", Int. J. Control
+//! 87(6), 2014). The result is mapped to time along the path's arc length (constant acceleration
+//! between grid points: dt = 2 ds / (v_i + v_{i+1})), as a tabulated SpeedProfile.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "smoothsteer/path/path.hpp"
+#include "smoothsteer/sim/speed_profile.hpp"
+#include "smoothsteer/validation.hpp"
+
+namespace smoothsteer {
+
+struct CurvatureSpeedLimits {
+  double max_speed_mps = 10.0;                 //!< design speed, on straights [m/s]
+  double max_lateral_acceleration_mps2 = 2.0;  //!< v^2 |kappa| bound [m/s^2]
+  double max_acceleration_mps2 = 1.0;          //!< dv/dt bound when speeding up [m/s^2]
+  double max_deceleration_mps2 = 2.0;          //!< -dv/dt bound when braking [m/s^2]
+  //! Speed at s = 0 [m/s]; empty: the limit there. Clamped to the limit there.
+  std::optional<double> initial_speed_mps;
+  double spacing_m = 0.5;  //!< grid of the passes [m]
+
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  std::string validation_error() const { return describe(first_violation()); }
+  void validate() const { throw_if_violated(first_violation()); }
+};
+
+//! The limited speed at s_i = i * spacing_m from 0 to the path's length (the last point at the
+//! length). Each point's curvature bound uses the largest |kappa| of the path within one spacing
+//! of it, so a curvature jump between grid points is met at full bound. Throws
+//! std::invalid_argument (validate()) on bad limits.
+std::vector<double> curvature_limited_speeds(const Path& path, const CurvatureSpeedLimits& limits);
+
+//! The same as a time table: knots at the grid points, speed linear in time between them.
+SpeedProfile curvature_speed_profile(const Path& path, const CurvatureSpeedLimits& limits);
+
+}  // namespace smoothsteer
