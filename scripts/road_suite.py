@@ -80,6 +80,8 @@ CONTROLLER = """\
 controller:
   type: scheduled_lead_wheel
   schedule: {schedule}
+  # The steering governor (docs/governor.md), as in every shipped lead-wheel scenario.
+  governor: {{enabled: true}}
   cornering_target: rear_axle_exact
   actuator_delay_s: 0.048
   slip_preview: true

@@ -39,10 +39,7 @@ TEST(Scenarios, EveryFileRunsAndItsSummaryHasEveryMetric) {
     EXPECT_EQ(result.simulation.status, Status::ok);
     EXPECT_FALSE(result.simulation.non_finite);
     EXPECT_EQ(result.metrics.non_finite_values, 0);
-    // hairpin.yaml is the open case of docs/scenarios.md: the certified route runs wide there.
-    if (file.stem() != "hairpin") {
-      EXPECT_TRUE(result.metrics.reached);
-    }
+    EXPECT_TRUE(result.metrics.reached);
     const nlohmann::json summary = summary_json(scenario, result);
     for (const auto& [name, value] : metric_values(result.metrics)) {
       ASSERT_TRUE(summary.at("metrics").contains(name)) << name;
