@@ -6,7 +6,9 @@
 // what the arithmetic does with the rest (a float-to-int overflow of the sub-step count was
 // one).
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -25,11 +27,13 @@ class Reader {
   std::uint8_t byte() { return used_ < size_ ? data_[used_++] : 0; }
   bool empty() const { return used_ >= size_; }
   //! A value from a table of edge cases (zero, subnormal, huge, inf, NaN, the bounds of the
-  //! rules) or, for a selector byte >= 64, eight raw bytes scaled to a plausible magnitude.
+  //! rules) for a selector byte < 64, else eight raw bytes: as they are for a selector >= 160,
+  //! with their magnitude moved into [1/16, 8) (near the defaults) below that.
   double real() {
     static constexpr double inf = std::numeric_limits<double>::infinity();
+    static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     static constexpr double special[] = {
-        0.0, -0.0, 1e-308, -1e-308, 4.9e-324, 1e308, -1e308, inf, -inf,  NAN, 1.0, -1.0,
+        0.0, -0.0, 1e-308, -1e-308, 4.9e-324, 1e308, -1e308, inf, -inf,  nan, 1.0, -1.0,
         0.5, 0.01, 100.0,  1e-3,    1e3,      1e9,   -1e9,   1e6, 0.999, 2.7, 0.2, 1.5707963};
     const std::uint8_t selector = byte();
     if (selector < 64) return special[selector % (sizeof special / sizeof special[0])];
@@ -38,7 +42,8 @@ class Reader {
     double value = 0.0;
     std::memcpy(&value, &bits, sizeof value);
     if (selector < 160 && std::isfinite(value)) {  // a number near the defaults: mantissa only
-      return std::ldexp(std::frexp(value, nullptr), static_cast<int>(selector % 8) - 3);
+      int exponent = 0;
+      return std::ldexp(std::frexp(value, &exponent), static_cast<int>(selector % 8) - 3);
     }
     return value;
   }

@@ -137,7 +137,7 @@ TEST(PathValidation, ExtentsBeyondTheArithmeticAreRefused) {
       [] {
         PathBuilder({0, 0}, 0).arc(1e300, 1e-299).build();
       },
-      {"segments[0]", "1e-09 1/m"});
+      {"segments[0]", "1e-9 1/m"});
   // The largest accepted circle still projects to a finite error.
   const Path largest = Path::circle({0, 0}, 1e9);  // Path::max_extent_m
   const PathProjection p = largest.project({0.0, 0.5e9});
