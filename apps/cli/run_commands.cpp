@@ -67,7 +67,8 @@ void run(const RunOptions& options) {
   std::printf("wrote %s/trace.csv and summary.json%s\n", out.target().c_str(),
               options.plot && ok ? ", path.csv and trace.png" : "");
   if (!ok) {
-    throw std::runtime_error("run stopped early: " + result.simulation.stop_reason);
+    throw std::runtime_error("run stopped early: " + result.simulation.stop_reason + " (" +
+                             result.simulation.stop_detail + ")");
   }
 }
 

@@ -82,12 +82,8 @@ void print_summary(const GainSchedule& schedule, std::ostream& out) {
 //! The path of a YAML file: a scenario file (its `path:` section) or a bare path section, in any
 //! of the scenario path forms (docs/scenarios.md).
 std::shared_ptr<const Path> load_path_file(const std::string& file) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::Exception& error) {
-    throw std::invalid_argument(file + ": cannot read path file: " + error.what());
-  }
+  // Regular files only, bounded size and alias expansion, as every scenario file.
+  const YAML::Node root = io::load_yaml_file(file);
   if (!root.IsMap()) throw std::invalid_argument(file + ": a path file must be a YAML map");
   const bool scenario = static_cast<bool>(root["path"]);
   io::ConfigSection section(scenario ? root["path"] : root, scenario ? "path" : "", file);

@@ -3,6 +3,7 @@
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -32,9 +33,34 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
     return fail(text("order"), p.order,
                 [] { return "must be in [0, " + std::to_string(max_order) + "]"; });
   }
+  // Enumerations set from an int (bindings, casts) must hold one of their values.
+  if (p.surface != SlidingSurface::global && p.surface != SlidingSurface::paper) {
+    return fail(text("surface"), static_cast<int>(p.surface),
+                text("must be 0 (global) or 1 (paper)"));
+  }
+  if (p.cornering_target != CorneringTarget::rear_axle &&
+      p.cornering_target != CorneringTarget::rear_axle_exact &&
+      p.cornering_target != CorneringTarget::lead_wheel) {
+    return fail(text("cornering_target"), static_cast<int>(p.cornering_target),
+                text("must be 0 (rear_axle), 1 (rear_axle_exact) or 2 (lead_wheel)"));
+  }
+  if (p.curvature_preview != CurvaturePreview::centred_ramp &&
+      p.curvature_preview != CurvaturePreview::planned_jumps) {
+    return fail(text("curvature_preview"), static_cast<int>(p.curvature_preview),
+                text("must be 0 (centred_ramp) or 1 (planned_jumps)"));
+  }
+  constexpr double shortest = ControllerParameters::min_wheelbase_m;
+  constexpr double longest = ControllerParameters::max_wheelbase_m;
+  auto wheelbase_rule = [] {
+    return "must be in [0.01, 100] m (min_wheelbase_m, max_wheelbase_m)";
+  };
   if (!finite_positive(p.vehicle_wheelbase_m)) {
     return fail(text("vehicle_wheelbase_m"), p.vehicle_wheelbase_m, text("must be finite and > 0"));
   }
+  if (p.vehicle_wheelbase_m < shortest || p.vehicle_wheelbase_m > longest) {
+    return fail(text("vehicle_wheelbase_m"), p.vehicle_wheelbase_m, wheelbase_rule);
+  }
+  double shortest_lambda = longest;
   for (int i = 0; i < p.order; ++i) {
     const double lambda = p.wheelbases_m[static_cast<std::size_t>(i)];
     auto name = [i] { return wheelbase_name(i); };
@@ -42,6 +68,8 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
       return fail(name, lambda,
                   text("must be finite and > 0 (reversing is selected by v < 0, not by the sign)"));
     }
+    if (lambda < shortest || lambda > longest) return fail(name, lambda, wheelbase_rule);
+    shortest_lambda = std::min(shortest_lambda, lambda);
     // Paper Sec. III item 3: lambda^2 = lambda_veh^2 - lambda_l^2 implies lambda_l < lambda_veh.
     if (i >= 1 && lambda >= p.vehicle_wheelbase_m) {
       return fail(name, lambda, [&p] {
@@ -133,6 +161,13 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
   }
   if (!finite_positive(p.max_substep_fraction) || p.max_substep_fraction > 1.0) {
     return fail(text("max_substep_fraction"), p.max_substep_fraction, text("must be in (0, 1]"));
+  }
+  if (p.order > 0 &&
+      p.max_substep_fraction * shortest_lambda < ControllerParameters::min_substep_m) {
+    return fail(text("max_substep_fraction"), p.max_substep_fraction, [shortest_lambda] {
+      return "times the shortest wheelbase " + std::to_string(shortest_lambda) +
+             " m must be >= min_substep_m = 0.001 m";
+    });
   }
   if (p.max_substeps < 1 || p.max_substeps > 10000) {
     return fail(text("max_substeps"), p.max_substeps, text("must be in [1, 10000]"));

@@ -28,6 +28,13 @@ std::string unique_suffix() {
   return std::to_string(::getpid()) + "." + std::to_string(counter++);
 }
 
+//! The part of an output's name that its temporary siblings carry: a name may have NAME_MAX
+//! = 255 bytes, and ".NAME.partial.PID.N.old" must fit in that too.
+std::string name_stem(const std::string& name) {
+  constexpr std::size_t longest = 180;
+  return name.substr(0, longest);
+}
+
 fs::path directory_of(const fs::path& path) {
   return path.has_parent_path() ? path.parent_path() : fs::path(".");
 }
@@ -46,7 +53,7 @@ bool process_is_gone(const std::string& pid_text) {
 //! Removes `.NAME.partial.PID.N` siblings whose process no longer runs (left by a kill).
 void remove_stale_partials(const fs::path& parent, const std::string& name) {
   std::string prefix = ".";
-  prefix.append(name).append(".partial.");
+  prefix.append(name_stem(name)).append(".partial.");
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(parent, error)) {
     const std::string entry_name = entry.path().filename().string();
@@ -73,7 +80,9 @@ void write_file_atomically(const std::string& path, const std::string& content,
   require_regular_file_or_absent(path, option);
   const fs::path target(path);
   std::string temporary_name = ".";  // built by append: GCC 12 warns on "." + a + b (-Wrestrict)
-  temporary_name.append(target.filename().string()).append(".tmp.").append(unique_suffix());
+  temporary_name.append(name_stem(target.filename().string()))
+      .append(".tmp.")
+      .append(unique_suffix());
   const fs::path temporary = directory_of(target) / temporary_name;
   {
     std::ofstream file(temporary, std::ios::binary);
@@ -135,7 +144,7 @@ OutputDirectory::OutputDirectory(std::string target, std::string option)
   }
   remove_stale_partials(parent, name);
   std::string partial_name = ".";
-  partial_name.append(name).append(".partial.").append(unique_suffix());
+  partial_name.append(name_stem(name)).append(".partial.").append(unique_suffix());
   partial_ = parent / partial_name;
   if (!fs::create_directory(partial_, error) || error) {
     throw std::runtime_error(option_ + " '" + target_ + "': cannot create '" + partial_.string() +

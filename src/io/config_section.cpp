@@ -1,11 +1,15 @@
 #include "smoothsteer/io/config_section.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
+#include "smoothsteer/io/bounded_file.hpp"
 #include "smoothsteer/io/text_checks.hpp"
 
 namespace smoothsteer::io {
@@ -236,64 +240,123 @@ void ConfigSection::finish() const {
 
 namespace {
 
-//! Largest YAML file read [bytes]; scenario and vehicle files are a few kB.
-constexpr std::uintmax_t max_yaml_file_bytes = 16u << 20;
+//! One walk over a parsed document. yaml-cpp resolves an alias to the very node its anchor
+//! names, so the document is a graph: `a: &a [*a]` is a cycle and nine nested lists of nine
+//! aliases ("billion laughs") expand to 10^9 nodes. The walk checks every distinct container
+//! once and counts what every later reader would visit, each alias once per use: it stops at a
+//! cycle, beyond max_yaml_depth and beyond max_yaml_nodes, in time linear in the text.
+struct DocumentWalk {
+  //! One step from a container to a child: a key of a mapping or an index of a list.
+  struct Step {
+    const std::string* key;  //!< null for a list element
+    std::size_t index;
+  };
+  //! What a container expands to: its nodes, itself included, and its nesting height.
+  struct Expansion {
+    std::size_t nodes = 1;
+    std::size_t height = 0;
+  };
+  const std::string& file;
+  std::size_t visited = 0;
+  std::vector<YAML::Node> open;  //!< the containers from the root down to the current node
+  std::vector<Step> steps;       //!< the way there; a key path is only built for a message
+  //! Containers already walked, by where their text starts (no two containers of a parsed
+  //! document start at the same place and are of the same type, but a non-scalar key, which
+  //! the walk refuses before it looks inside).
+  std::map<std::pair<int, int>, Expansion> walked;
 
-std::string key_text(const YAML::Node& key) {
-  return key.IsScalar() ? key.Scalar() : std::string("<non-scalar key>");
-}
-
-//! yaml-cpp keeps duplicate keys and returns the first on lookup; reject them, and keys that
-//! are not plain strings.
-void reject_duplicate_keys(const YAML::Node& node, const std::string& path,
-                           const std::string& file) {
-  if (node.IsMap()) {
-    std::map<std::string, int> lines;
-    for (const auto& entry : node) {
-      const std::string key = key_text(entry.first);
-      const std::string full = path.empty() ? key : path + "." + key;
-      const int line = entry.first.Mark().line + 1;
-      if (!entry.first.IsScalar()) {
-        throw ConfigError(file + ": key '" + full + "' (line " + std::to_string(line) +
-                          "): keys must be plain strings");
+  std::string path() const {
+    std::string text;
+    for (const Step& step : steps) {
+      if (step.key) {
+        text.append(text.empty() ? "" : ".").append(*step.key);
+      } else {
+        text.append("[").append(std::to_string(step.index)).append("]");
       }
-      const auto [previous, inserted] = lines.emplace(key, line);
-      if (!inserted) {
-        throw ConfigError(file + ": key '" + full + "' (line " + std::to_string(line) +
-                          "): duplicate key (first given at line " +
-                          std::to_string(previous->second) + ")");
-      }
-      reject_duplicate_keys(entry.second, full, file);
     }
-  } else if (node.IsSequence()) {
-    for (std::size_t i = 0; i < node.size(); ++i) {
-      reject_duplicate_keys(node[i], path + "[" + std::to_string(i) + "]", file);
+    return text.empty() ? "<root>" : text;
+  }
+
+  [[noreturn]] void fail(int line, const std::string& reason) const {
+    throw ConfigError(file + ": key '" + path() + "' (line " + std::to_string(line) +
+                      "): " + reason);
+  }
+
+  void count(std::size_t nodes, std::size_t height, int line) {
+    visited += nodes;
+    if (visited > max_yaml_nodes) {
+      fail(line, "the document expands to more than " + std::to_string(max_yaml_nodes) +
+                     " nodes (aliases count once per use); not a scenario or vehicle file");
+    }
+    if (open.size() + height > max_yaml_depth) {
+      fail(line, "nested deeper than " + std::to_string(max_yaml_depth) + " levels");
     }
   }
-}
+
+  //! yaml-cpp keeps duplicate keys and returns the first on lookup; reject them, and keys that
+  //! are not plain strings.
+  Expansion walk(const YAML::Node& node) {
+    const int line = node.Mark().line + 1;
+    if (!node.IsMap() && !node.IsSequence()) {
+      count(1, 0, line);
+      return {};
+    }
+    for (const YAML::Node& outer : open) {
+      if (outer.is(node)) fail(line, "an alias refers to a node that contains it (a cycle)");
+    }
+    const std::pair<int, int> where{node.Mark().pos, static_cast<int>(node.Type())};
+    if (where.first >= 0) {
+      if (const auto done = walked.find(where); done != walked.end()) {
+        count(done->second.nodes, done->second.height, line);
+        return done->second;
+      }
+    }
+    count(1, 1, line);
+    Expansion expansion{1, 1};
+    const auto add = [&expansion](const Expansion& child) {
+      expansion.nodes += child.nodes;
+      expansion.height = std::max(expansion.height, child.height + 1);
+    };
+    open.push_back(node);
+    if (node.IsMap()) {
+      std::map<std::string_view, int> lines;
+      for (const auto& entry : node) {
+        const int key_line = entry.first.Mark().line + 1;
+        static const std::string non_scalar = "<non-scalar key>";
+        steps.push_back({entry.first.IsScalar() ? &entry.first.Scalar() : &non_scalar, 0});
+        if (!entry.first.IsScalar()) fail(key_line, "keys must be plain strings");
+        const auto [previous, inserted] = lines.emplace(entry.first.Scalar(), key_line);
+        if (!inserted) {
+          fail(key_line,
+               "duplicate key (first given at line " + std::to_string(previous->second) + ")");
+        }
+        count(1, 0, key_line);  // the key itself
+        ++expansion.nodes;
+        add(walk(entry.second));
+        steps.pop_back();
+      }
+    } else {
+      for (std::size_t i = 0; i < node.size(); ++i) {
+        steps.push_back({nullptr, i});
+        add(walk(node[i]));
+        steps.pop_back();
+      }
+    }
+    open.pop_back();
+    if (where.first >= 0) walked.emplace(where, expansion);
+    return expansion;
+  }
+};
 
 }  // namespace
 
 YAML::Node load_yaml_file(const std::string& file) {
-  std::error_code error;
-  const auto status = std::filesystem::status(file, error);
-  if (!std::filesystem::exists(status))
-    throw ConfigError(file + ": cannot open file (no such file)");
-  if (std::filesystem::is_directory(status)) {
-    throw ConfigError(file + ": is a directory, expected a YAML file");
+  std::string text;
+  try {
+    text = read_bounded_file(file, max_yaml_file_bytes, "YAML file");
+  } catch (const FileReadError& error) {
+    throw ConfigError(error.what());
   }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw ConfigError(file + ": not a regular file, expected a YAML file");
-  }
-  if (std::filesystem::file_size(file, error) > max_yaml_file_bytes) {
-    throw ConfigError(file + ": larger than " + std::to_string(max_yaml_file_bytes) +
-                      " bytes; not a scenario or vehicle file");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw ConfigError(file + ": cannot open file");
-  std::ostringstream content;
-  content << in.rdbuf();
-  const std::string text = content.str();
   return parse_yaml_text(text, file);
 }
 
@@ -310,7 +373,8 @@ YAML::Node parse_yaml_text(const std::string& text, const std::string& file) {
     throw ConfigError(file + ": malformed YAML at line " + std::to_string(error.mark.line + 1) +
                       ", column " + std::to_string(error.mark.column + 1) + ": " + error.msg);
   }
-  reject_duplicate_keys(root, "", file);
+  DocumentWalk walk{file, 0, {}, {}, {}};
+  walk.walk(root);
   return root;
 }
 

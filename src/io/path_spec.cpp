@@ -147,6 +147,12 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
         points.push_back({*x, *y});
         resolved.push_back(list[i]);
       }
+      if (const std::optional<std::size_t> turn = Path::find_reversal(points)) {
+        c.fail("points", "element " + std::to_string(*turn) +
+                             ": the path turns back on itself there (more than 120 degrees from "
+                             "the previous chord to the next); a path that changes direction "
+                             "needs one path per direction (docs/cusps.md)");
+      }
       c.store("points", resolved);
       return std::make_shared<const Path>(Path::from_waypoints(points));
     }
@@ -154,7 +160,13 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
     std::string csv = c.required_text("file");
     std::filesystem::path csv_path(csv);
     if (csv_path.is_relative()) csv_path = std::filesystem::path(base_directory) / csv_path;
-    return std::make_shared<const Path>(Path::from_waypoints(read_waypoint_csv(csv_path.string())));
+    std::vector<Vec2> points;
+    try {
+      points = read_waypoint_csv(csv_path.string());
+    } catch (const ConfigError& error) {
+      c.fail("file", error.what());  // names the key that gave the file
+    }
+    return std::make_shared<const Path>(Path::from_waypoints(points));
   } catch (const std::invalid_argument& error) {
     throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error.what());
   }

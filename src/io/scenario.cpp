@@ -78,8 +78,9 @@ YAML::Node read_vehicle(ConfigSection& c, Scenario& s) {
     double_track = read_double_track(c.section("double_track"), *v.double_track);
   }
   c.finish();
-  if (const std::string error = v.validation_error(); !error.empty()) {
-    throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error);
+  // Named by its key: "key 'vehicle.mass_kg' (from --set): VehicleParameters: mass_kg = ...".
+  if (const std::optional<Violation> violation = v.first_violation()) {
+    c.fail(std::string(violation->prefix) + violation->field, describe(*violation));
   }
   YAML::Node resolved = c.resolved();
   resolved["front_tire"] = front;
@@ -111,6 +112,20 @@ void check(const ConfigSection& c, const Validated& value) {
 }
 
 }  // namespace
+
+VehicleParameters check_vehicle_mapping(const YAML::Node& vehicle, const std::string& file,
+                                        const std::set<std::string>& skipped) {
+  YAML::Node kept(YAML::NodeType::Map);
+  if (vehicle.IsMap()) {
+    for (const auto& entry : vehicle) {
+      if (!skipped.count(entry.first.Scalar())) kept[entry.first.Scalar()] = entry.second;
+    }
+  }
+  ConfigSection c(vehicle.IsMap() ? kept : vehicle, "", file);
+  Scenario s;
+  read_vehicle(c, s);
+  return s.vehicle;
+}
 
 void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides,
                      const std::string& file) {
@@ -177,7 +192,12 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
     if (name.empty()) vehicle_keys.fail("file", "expected the name of a vehicle YAML file");
     std::filesystem::path vehicle_file(name);
     if (vehicle_file.is_relative()) vehicle_file = std::filesystem::path(directory) / vehicle_file;
-    const YAML::Node from_file = load_yaml_file(vehicle_file.string());
+    YAML::Node from_file;
+    try {
+      from_file = load_yaml_file(vehicle_file.string());
+    } catch (const ConfigError& error) {
+      vehicle_keys.fail("file", error.what());  // names the key that gave the file
+    }
     if (!from_file.IsMap()) throw ConfigError(vehicle_file.string() + ": expected a mapping");
     for (const auto& entry : from_file) merged[entry.first.as<std::string>()] = entry.second;
     vehicle_label = file + " (vehicle file " + vehicle_file.string() + ")";

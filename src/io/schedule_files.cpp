@@ -3,12 +3,15 @@
 #include <yaml-cpp/yaml.h>
 
 #include "smoothsteer/io/atomic_output.hpp"
+#include "smoothsteer/io/bounded_file.hpp"
+#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/io/text_checks.hpp"
 
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -56,11 +59,10 @@ const std::set<std::string>& ignored_keys() {
 double number(const YAML::Node& root, const std::string& file, const std::string& key) {
   const YAML::Node node = root[key];
   if (!node) fail(file, key, "missing (required)");
-  try {
-    return node.as<double>();
-  } catch (const YAML::Exception&) {
-    fail(file, key, "must be a number");
-  }
+  // The scenario reader's number syntax: ".nan", ".inf" and "0.3garbage" are not numbers.
+  const std::optional<double> value = node.IsScalar() ? parse_number(node.Scalar()) : std::nullopt;
+  if (!value) fail(file, key, "must be a finite number");
+  return *value;
 }
 
 }  // namespace
@@ -68,9 +70,10 @@ double number(const YAML::Node& root, const std::string& file, const std::string
 VehicleLimits load_vehicle_limits(const std::string& yaml_path) {
   YAML::Node root;
   try {
-    root = YAML::LoadFile(yaml_path);
-  } catch (const YAML::Exception& error) {
-    throw std::invalid_argument(yaml_path + ": cannot read vehicle file: " + error.what());
+    // Regular files only, bounded size and alias expansion, UTF-8, plain and unique keys.
+    root = load_yaml_file(yaml_path);
+  } catch (const ConfigError& error) {
+    throw std::invalid_argument(error.what());
   }
   if (!root.IsMap()) throw std::invalid_argument(yaml_path + ": a vehicle file must be a map");
   static const std::set<std::string> used{"wheelbase_m",
@@ -80,10 +83,17 @@ VehicleLimits load_vehicle_limits(const std::string& yaml_path) {
                                           "max_steering_rate_radps",
                                           "max_steering_acceleration_radps2"};
   for (const auto& item : root) {
-    const std::string key = item.first.as<std::string>();
+    const std::string key = item.first.Scalar();
     if (!used.count(key) && !ignored_keys().count(key)) {
       fail(yaml_path, key, "unknown key (docs/tuning.md lists the vehicle schema)");
     }
+  }
+  // The keys of the simulation's schema are checked as `run` checks them, even those the tuner
+  // does not use: a file tune accepts is one run accepts.
+  try {
+    check_vehicle_mapping(root, yaml_path, {"wheelbase_m"});
+  } catch (const ConfigError& error) {
+    throw std::invalid_argument(error.what());
   }
   VehicleLimits limits;
   if (root["wheelbase_m"]) {
@@ -133,8 +143,12 @@ void write_schedule_csv(const GainSchedule& schedule, const std::string& csv_pat
 }
 
 GainSchedule read_schedule_csv(const std::string& csv_path, const ControllerParameters& base) {
-  std::ifstream in(csv_path);
-  if (!in) throw std::invalid_argument(csv_path + ": cannot open schedule file");
+  std::istringstream in;
+  try {
+    in.str(read_bounded_file(csv_path, max_schedule_file_bytes, "schedule file"));
+  } catch (const FileReadError& error) {
+    throw std::invalid_argument(error.what());
+  }
   std::string line;
   std::getline(in, line);
   std::string expected, legacy;

@@ -122,7 +122,10 @@ std::vector<SweepRow> run_sweep(const std::string& scenario_file,
       const RunResult result = run_scenario(scenario);
       row.metrics = result.metrics;
       row.ok = result.simulation.status == Status::ok && !result.simulation.non_finite;
-      if (!row.ok) row.error = "run stopped: " + result.simulation.stop_reason;
+      if (!row.ok) {
+        row.error = "run stopped: " + result.simulation.stop_reason + " (" +
+                    result.simulation.stop_detail + ")";
+      }
     } catch (const std::exception& error) {
       row.error = error.what();
     }

@@ -3,18 +3,16 @@
 #include "smoothsteer/io/waypoint_csv.hpp"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "smoothsteer/io/bounded_file.hpp"
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/io/text_checks.hpp"
+#include "smoothsteer/path/path.hpp"
 
 namespace smoothsteer::io {
 namespace {
-
-//! Largest waypoint file read [bytes] (max_waypoints rows of two long numbers).
-constexpr std::uintmax_t max_waypoint_file_bytes = 64u << 20;
 
 std::string trim(const std::string& text) {
   const std::size_t begin = text.find_first_not_of(" \t");
@@ -32,6 +30,7 @@ std::vector<Vec2> parse_waypoint_csv(const std::string& text, const std::string&
     throw ConfigError(error.what());
   }
   std::vector<Vec2> points;
+  std::vector<int> lines;  //!< the line of each waypoint, to name a bad one
   std::istringstream in(text);
   std::string line;
   int number = 0;
@@ -63,28 +62,25 @@ std::vector<Vec2> parse_waypoint_csv(const std::string& text, const std::string&
       fail("more than " + std::to_string(max_waypoints) + " waypoints");
     }
     points.push_back({*x, *y});
+    lines.push_back(number);
   }
   if (points.size() < 2) throw ConfigError(file + ": needs at least 2 waypoints");
+  if (const std::optional<std::size_t> turn = Path::find_reversal(points)) {
+    throw ConfigError(file + ": line " + std::to_string(lines[*turn]) +
+                      ": the path turns back on itself at this waypoint (more than 120 degrees "
+                      "from the previous chord to the next); a path that changes direction needs "
+                      "one path per direction (docs/cusps.md)");
+  }
   return points;
 }
 
 std::vector<Vec2> read_waypoint_csv(const std::string& file) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::file_status status = fs::status(file, error);
-  if (!fs::exists(status)) throw ConfigError(file + ": cannot open waypoint file (no such file)");
-  if (!fs::is_regular_file(status)) {
-    throw ConfigError(file + ": waypoint file is a directory or not a regular file");
+  try {
+    return parse_waypoint_csv(read_bounded_file(file, max_waypoint_file_bytes, "waypoint file"),
+                              file);
+  } catch (const FileReadError& error) {
+    throw ConfigError(error.what());
   }
-  if (fs::file_size(file, error) > max_waypoint_file_bytes) {
-    throw ConfigError(file + ": waypoint file larger than " +
-                      std::to_string(max_waypoint_file_bytes) + " bytes");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw ConfigError(file + ": cannot open waypoint file");
-  std::ostringstream content;
-  content << in.rdbuf();
-  return parse_waypoint_csv(content.str(), file);
 }
 
 }  // namespace smoothsteer::io

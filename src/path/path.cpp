@@ -41,10 +41,26 @@ void require_positive(const char* where, const std::string& field, double value)
   }
 }
 
+void require_coordinate(const char* where, const std::string& field, double value) {
+  require_finite(where, field, value);
+  if (!(std::abs(value) <= Path::max_extent_m)) {
+    fail(std::string(where) + ": " + field + " = " + detail::format_number(value) +
+         " must have magnitude <= 1e9 m (Path::max_extent_m)");
+  }
+}
+
+void require_extent(const char* where, const std::string& field, double value, double most) {
+  require_positive(where, field, value);
+  if (!(value <= most)) {
+    fail(std::string(where) + ": " + field + " = " + detail::format_number(value) + " must be <= " +
+         detail::format_number(most) + " m (Path::max_extent_m, Path::max_length_m)");
+  }
+}
+
 void validate_segment(const PathSegment& segment, std::size_t index) {
   constexpr const char* where = "Path::from_segments";
   const std::string name = "segments[" + std::to_string(index) + "]";
-  require_positive(where, name + ".length", segment.length);
+  require_extent(where, name + ".length", segment.length, Path::max_length_m);
   if (segment.kind == PathSegment::Kind::cubic) {
     for (std::size_t i = 0; i < 4; ++i) {
       require_finite(where, name + ".x_coefficients[" + std::to_string(i) + "]",
@@ -60,12 +76,18 @@ void validate_segment(const PathSegment& segment, std::size_t index) {
     }
     return;
   }
-  require_finite(where, name + ".start.x", segment.start.x);
-  require_finite(where, name + ".start.y", segment.start.y);
+  require_coordinate(where, name + ".start.x", segment.start.x);
+  require_coordinate(where, name + ".start.y", segment.start.y);
   require_finite(where, name + ".start_heading_rad", segment.start_heading_rad);
   require_finite(where, name + ".curvature", segment.curvature);
   if (segment.kind == PathSegment::Kind::arc && segment.curvature == 0.0) {
     fail(std::string(where) + ": " + name + ".curvature = 0 must be nonzero for an arc");
+  }
+  if (segment.kind == PathSegment::Kind::arc &&
+      !(std::abs(segment.curvature) >= 1.0 / Path::max_extent_m)) {
+    fail(std::string(where) + ": " + name +
+         ".curvature = " + detail::format_number(segment.curvature) +
+         " must have magnitude >= 1e-9 1/m (radius <= Path::max_extent_m)");
   }
   require_finite(where, name + ".curvature_rate", segment.curvature_rate);
   if (segment.kind == PathSegment::Kind::clothoid) {
@@ -119,18 +141,18 @@ std::string detail::format_number(double value) {
 
 Path Path::straight_line(Vec2 start, double heading_rad, double length_m) {
   constexpr const char* where = "Path::straight_line";
-  require_finite(where, "start.x", start.x);
-  require_finite(where, "start.y", start.y);
+  require_coordinate(where, "start.x", start.x);
+  require_coordinate(where, "start.y", start.y);
   require_finite(where, "heading_rad", heading_rad);
-  require_positive(where, "length_m", length_m);
+  require_extent(where, "length_m", length_m, max_length_m);
   return assemble({PathSegment::make_line(start, heading_rad, length_m)}, false);
 }
 
 Path Path::circle(Vec2 center, double radius_m, bool counter_clockwise, double start_angle_rad) {
   constexpr const char* where = "Path::circle";
-  require_finite(where, "center.x", center.x);
-  require_finite(where, "center.y", center.y);
-  require_positive(where, "radius_m", radius_m);
+  require_coordinate(where, "center.x", center.x);
+  require_coordinate(where, "center.y", center.y);
+  require_extent(where, "radius_m", radius_m, max_extent_m);
   require_finite(where, "start_angle_rad", start_angle_rad);
   const double turn = counter_clockwise ? 1.0 : -1.0;
   const Vec2 start = center + radius_m * unit_from_heading(start_angle_rad);
@@ -142,8 +164,8 @@ Path Path::circle(Vec2 center, double radius_m, bool counter_clockwise, double s
 Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
   constexpr const char* where = "Path::from_waypoints";
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
-    require_finite(where, "waypoints[" + std::to_string(i) + "].x", waypoints[i].x);
-    require_finite(where, "waypoints[" + std::to_string(i) + "].y", waypoints[i].y);
+    require_coordinate(where, "waypoints[" + std::to_string(i) + "].x", waypoints[i].x);
+    require_coordinate(where, "waypoints[" + std::to_string(i) + "].y", waypoints[i].y);
   }
   if (waypoints.size() < 2) {
     fail(std::string(where) + ": waypoints.size() = " + std::to_string(waypoints.size()) +
@@ -158,12 +180,31 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
            " m apart; consecutive waypoints must be >= 1e-09 m apart");
     }
   }
+  if (const std::optional<std::size_t> turn = find_reversal(waypoints)) {
+    const Vec2 before = waypoints[*turn] - waypoints[*turn - 1];
+    const Vec2 after = waypoints[*turn + 1] - waypoints[*turn];
+    const double angle = std::abs(std::atan2(cross(before, after), dot(before, after)));
+    fail(std::string(where) + ": waypoints[" + std::to_string(*turn) + "]: the path turns by " +
+         detail::format_number(angle) +
+         " rad there, more than max_waypoint_turn_rad = 2 pi / 3: it doubles back on itself; "
+         "a change of direction needs one path per direction (PathPlan, docs/cusps.md)");
+  }
   if (waypoints.size() == 2) {
     const Vec2 chord = waypoints[1] - waypoints[0];
     return assemble(
         {PathSegment::make_line(waypoints[0], std::atan2(chord.y, chord.x), norm(chord))}, false);
   }
   return assemble(detail::natural_cubic_spline(waypoints), false);
+}
+
+std::optional<std::size_t> Path::find_reversal(const std::vector<Vec2>& waypoints) noexcept {
+  for (std::size_t i = 1; i + 1 < waypoints.size(); ++i) {
+    const Vec2 before = waypoints[i] - waypoints[i - 1];
+    const Vec2 after = waypoints[i + 1] - waypoints[i];
+    const double angle = std::abs(std::atan2(cross(before, after), dot(before, after)));
+    if (angle > max_waypoint_turn_rad) return i;
+  }
+  return std::nullopt;
 }
 
 Path Path::from_segments(std::vector<PathSegment> segments, bool closed) {

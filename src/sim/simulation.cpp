@@ -52,6 +52,42 @@ double observe_rear_axle_side_slip(SideSlipObserver& observer, const VehicleMode
                     ControllerInput::max_side_slip_rad);
 }
 
+std::string text(double value) {
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+//! "at t = T s: the controller returned S: <which input is out of range, and its bound>".
+std::string controller_error_detail(Status status, const ControllerInput& input, double t) {
+  using R = ControllerInputRange;
+  std::string detail = "at t = " + text(t) + " s the controller returned " + to_string(status);
+  const struct {
+    const char* name;
+    double value;
+    double bound;
+    const char* unit;
+  } checks[] = {
+      {"rear axle x", input.rear_axle_position.x, R::max_abs_coordinate_m, "m"},
+      {"rear axle y", input.rear_axle_position.y, R::max_abs_coordinate_m, "m"},
+      {"heading", input.heading_rad, R::max_abs_heading_rad, "rad"},
+      {"speed", input.speed_mps, R::max_abs_speed_mps, "m/s"},
+      {"acceleration", input.acceleration_mps2, R::max_abs_acceleration_mps2, "m/s^2"},
+      {"rear-axle side slip", input.rear_axle_side_slip_rad, ControllerInput::max_side_slip_rad,
+       "rad"},
+  };
+  for (const auto& check : checks) {
+    if (!(std::abs(check.value) <= check.bound)) {
+      return detail + ": its input " + check.name + " = " + text(check.value) + " " + check.unit +
+             " is outside ControllerInputRange (magnitude <= " + text(check.bound) + " " +
+             check.unit + ")";
+    }
+  }
+  if (status == Status::numerical_error) {
+    return detail + ": a value inside the controller became non-finite";
+  }
+  return detail + " for an input within ControllerInputRange";
+}
+
 }  // namespace
 
 PlantIntegrator default_plant_integrator() noexcept {
@@ -245,6 +281,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     if (status != Status::ok) {
       result.status = status;
       result.stop_reason = "controller_error";
+      result.stop_detail = controller_error_detail(status, input, t);
       break;
     }
     const double command = output.steering_angle_rad;
@@ -290,6 +327,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     if (!all_finite(sample)) {
       result.non_finite = true;
       result.stop_reason = "non_finite";
+      result.stop_detail = "at t = " + text(t) + " s a trace value became non-finite";
       break;
     }
     observer(sample);
@@ -305,6 +343,7 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     if (!finite(state)) {
       result.non_finite = true;
       result.stop_reason = "non_finite";
+      result.stop_detail = "after t = " + text(t) + " s the plant state became non-finite";
       break;
     }
   }

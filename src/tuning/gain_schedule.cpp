@@ -306,8 +306,10 @@ std::vector<double> speed_grid(double first_mps, double last_mps, double step_mp
          << " must satisfy 0 < first <= last and step > 0 (all finite)";
     throw std::invalid_argument(text.str());
   }
-  const auto count = static_cast<long>(std::floor((last_mps - first_mps) / step_mps + 1e-9)) + 1;
-  if (count > 100000) throw std::invalid_argument("speed grid has more than 100000 speeds");
+  // Counted in double first: 1:1e300:1e-300 gives 1e600 = inf, which no integer holds.
+  const double steps = std::floor((last_mps - first_mps) / step_mps + 1e-9);
+  if (!(steps < 100000.0)) throw std::invalid_argument("speed grid has more than 100000 speeds");
+  const long count = static_cast<long>(steps) + 1;
   std::vector<double> speeds;
   for (long k = 0; k < count; ++k) speeds.push_back(first_mps + static_cast<double>(k) * step_mps);
   return speeds;

@@ -24,12 +24,19 @@ std::optional<Violation> tire_violation(const char* owner_name, const char* pref
   if (!positive(tire.stiffness_factor_b)) {
     return bad("stiffness_factor_b", tire.stiffness_factor_b, "must be finite and > 0");
   }
+  if (tire.stiffness_factor_b > VehiclePhysicalRange::max_stiffness_factor_b) {
+    return bad("stiffness_factor_b", tire.stiffness_factor_b,
+               "must be <= 100 1/rad (VehiclePhysicalRange; a stiffer tire makes the plant stiff)");
+  }
   if (!positive(tire.shape_factor_c) || tire.shape_factor_c >= 2.0) {
     return bad("shape_factor_c", tire.shape_factor_c,
                "must be in (0, 2) (lateral Magic Formula shape)");
   }
   if (!positive(tire.friction_mu)) {
     return bad("friction_mu", tire.friction_mu, "must be finite and > 0");
+  }
+  if (tire.friction_mu > VehiclePhysicalRange::max_friction_mu) {
+    return bad("friction_mu", tire.friction_mu, "must be <= 3 (VehiclePhysicalRange)");
   }
   if (!std::isfinite(tire.curvature_factor_e) || tire.curvature_factor_e > 1.0) {
     return bad("curvature_factor_e", tire.curvature_factor_e,
@@ -82,6 +89,25 @@ std::optional<Violation> VehicleParameters::first_violation() const noexcept {
     return bad("cg_height_m", cg_height_m, "must be finite and >= 0");
   }
   if (!positive(gravity_mps2)) return bad("gravity_mps2", gravity_mps2, "must be finite and > 0");
+  using Range = VehiclePhysicalRange;
+  if (mass_kg < Range::min_mass_kg || mass_kg > Range::max_mass_kg) {
+    return bad("mass_kg", mass_kg, "must be in [1, 1e6] kg (VehiclePhysicalRange)");
+  }
+  if (wheelbase_m() < Range::min_wheelbase_m || wheelbase_m() > Range::max_wheelbase_m) {
+    return bad("cg_to_front_axle_m", cg_to_front_axle_m,
+               "gives, with cg_to_rear_axle_m, a wheelbase outside [0.01, 100] m "
+               "(VehiclePhysicalRange)");
+  }
+  const double dynamic_index =
+      yaw_inertia_kgm2 / (mass_kg * cg_to_front_axle_m * cg_to_rear_axle_m);
+  if (!(dynamic_index >= Range::min_dynamic_index && dynamic_index <= Range::max_dynamic_index)) {
+    return bad("yaw_inertia_kgm2", yaw_inertia_kgm2,
+               "must give a dynamic index Iz / (mass_kg lf lr) in [0.1, 10] (VehiclePhysicalRange; "
+               "cars have about 1)");
+  }
+  if (gravity_mps2 > Range::max_gravity_mps2) {
+    return bad("gravity_mps2", gravity_mps2, "must be <= 100 m/s^2 (VehiclePhysicalRange)");
+  }
   if (auto v = tire_violation(owner, "front_tire.", front_tire)) return v;
   if (auto v = tire_violation(owner, "rear_tire.", rear_tire)) return v;
   if (!positive(max_steering_angle_rad) || max_steering_angle_rad >= 1.5) {

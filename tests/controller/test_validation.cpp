@@ -105,6 +105,65 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
   expect_rejected(p, "kbar_1 * lambda_1", "must be < 1");
 }
 
+// Values that overflowed the sub-step count (a float-to-int conversion in update()) or that
+// name no enumerator were accepted.
+TEST(ParameterValidation, RejectsValuesThatBreakTheArithmetic) {
+  ControllerParameters p;
+  p.wheelbases_m[0] = 1e-308;
+  expect_rejected(p, "wheelbases_m[0] (lambda_1) = 1e-308", "[0.01, 100] m");
+  p = {};
+  p.wheelbases_m[1] = 1e-308;
+  expect_rejected(p, "wheelbases_m[1] (lambda_2) = 1e-308", "[0.01, 100] m");
+  p = {};
+  p.max_substep_fraction = 1e-308;
+  expect_rejected(p, "max_substep_fraction = 1e-308", "min_substep_m = 0.001 m");
+  p = {};
+  p.max_substep_fraction = 0.005;  // 0.005 * lambda_2 = 0.005 m: fine
+  EXPECT_NO_THROW(p.validate());
+  p.wheelbases_m[1] = 0.1;  // 0.0005 m
+  expect_rejected(p, "max_substep_fraction = 0.005", "shortest wheelbase 0.1");
+  p = {};
+  p.vehicle_wheelbase_m = 1e308;
+  expect_rejected(p, "vehicle_wheelbase_m = 1e+308", "[0.01, 100] m");
+  p = {};
+  p.surface = static_cast<SlidingSurface>(7);
+  expect_rejected(p, "surface = 7", "0 (global) or 1 (paper)");
+  p = {};
+  p.cornering_target = static_cast<CorneringTarget>(-3);
+  expect_rejected(p, "cornering_target = -3", "2 (lead_wheel)");
+  p = {};
+  p.curvature_preview = static_cast<CurvaturePreview>(2);
+  expect_rejected(p, "curvature_preview = 2", "1 (planned_jumps)");
+}
+
+// The shortest legal sub-step at the fastest, longest legal period: the count fits an int.
+TEST(InputValidation, LongestPeriodAtTheShortestSubStepIsFinite) {
+  ControllerParameters p;
+  p.wheelbases_m[1] = 0.01;      // ControllerParameters::min_wheelbase_m
+  p.max_substep_fraction = 0.1;  // 0.001 m: ControllerParameters::min_substep_m
+  LeadWheelController controller(p, line());
+  ControllerOutput output;
+  const ControllerInput fastest{{0.0, 3.0},
+                                0.0,
+                                ControllerInputRange::max_abs_speed_mps,
+                                0.0,
+                                ControllerInputRange::max_period_s};
+  EXPECT_EQ(controller.update(fastest, output), Status::ok);
+  EXPECT_TRUE(all_finite(output));
+}
+
+TEST(MatchedDisturbance, RefusesValuesBeyondItsBound) {
+  LeadWheelController controller(ControllerParameters{}, line());
+  EXPECT_FALSE(controller.set_matched_disturbance(1e308));
+  EXPECT_FALSE(controller.set_matched_disturbance(-1.5));
+  EXPECT_FALSE(controller.set_matched_disturbance(nan));
+  EXPECT_TRUE(controller.set_matched_disturbance(0.01));
+  EXPECT_TRUE(controller.set_matched_disturbance(-1.0));  // max_matched_disturbance_per_m
+  ControllerOutput output;
+  EXPECT_EQ(controller.update({{0.0, 3.0}, 0.0, 5.0, 0.0, 0.02}, output), Status::ok);
+  EXPECT_TRUE(all_finite(output));
+}
+
 TEST(ParameterValidation, RejectsNullPath) {
   EXPECT_THROW(LeadWheelController(ControllerParameters{}, nullptr), std::invalid_argument);
 }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -118,6 +119,48 @@ TEST(PathValidation, Builder) {
   expect_message([] { PathBuilder({kNan, 0}, 0); }, {"start.x"});
   expect_message([] { PathBuilder({0, 0}, 0).build(); }, {"segments", "empty"});
   expect_message([] { PathBuilder({0, 0}, 0).line(1).arc(1, pi).build(true); }, {"segments[0]"});
+}
+
+// Extents whose squares overflow used to throw std::length_error (the curvature samples of a
+// circle of radius 1e308) or project to e = -inf (radius 1e200).
+TEST(PathValidation, ExtentsBeyondTheArithmeticAreRefused) {
+  expect_message(
+      [] {
+        Path::circle({0, 0}, 1e308);
+      },
+      {"Path::circle", "radius_m = 1e+308", "1e+09"});
+  expect_message([] { Path::circle({0, 0}, 1e200); }, {"radius_m = 1e+200"});
+  expect_message([] { Path::circle({1e300, 0}, 5.0); }, {"center.x = 1e+300", "1e9 m"});
+  expect_message([] { Path::straight_line({0, 0}, 0.0, 1e300); }, {"length_m = 1e+300"});
+  expect_message([] { Path::from_waypoints({{0, 0}, {1e200, 1}}); }, {"waypoints[1].x = 1e+200"});
+  expect_message(
+      [] {
+        PathBuilder({0, 0}, 0).arc(1e300, 1e-299).build();
+      },
+      {"segments[0]", "1e-9 1/m"});
+  // The largest accepted circle still projects to a finite error.
+  const Path largest = Path::circle({0, 0}, 1e9);  // Path::max_extent_m
+  const PathProjection p = largest.project({0.0, 0.5e9});
+  EXPECT_TRUE(std::isfinite(p.lateral_error_m));
+  EXPECT_NEAR(p.lateral_error_m, 0.5e9, 1.0);
+}
+
+// 0 -> 30 -> 0 on one line: the spline has a cusp at 30 and the projection sticks there.
+TEST(PathValidation, WaypointsThatDoubleBackAreRefused) {
+  expect_message(
+      [] {
+        Path::from_waypoints({{0, 0}, {30, 0}, {0, 0}});
+      },
+      {"Path::from_waypoints", "waypoints[1]", "doubles back", "PathPlan"});
+  expect_message(
+      [] {
+        Path::from_waypoints({{0, 0}, {10, 0}, {20, 0}, {15, 1}});
+      },
+      {"waypoints[2]", "doubles back"});
+  expect_message([] { Path::from_waypoints({{0, 0}, {30, 0}, {0, 0.5}}); }, {"waypoints[1]"});
+  EXPECT_NO_THROW(Path::from_waypoints({{0, 0}, {10, 0}, {10, 10}, {20, 10}}));           // 90 deg
+  EXPECT_NO_THROW(Path::from_waypoints({{0, 0}, {10, 0}, {8, 10}}));                      // 101 deg
+  EXPECT_THROW(Path::from_waypoints({{0, 0}, {10, 0}, {0, 10}}), std::invalid_argument);  // 135
 }
 
 }  // namespace

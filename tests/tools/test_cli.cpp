@@ -257,6 +257,60 @@ TEST_F(Cli, PeakMemoryDoesNotGrowWithTheDuration) {
             50 * fs::file_size(directory_ / "m10/trace.csv"));
 }
 
+// Messages that named nothing: the controller error says when and which input, and a legal
+// --out of 255 bytes works.
+TEST_F(Cli, ControllerErrorsSayWhenAndWhy) {
+  const ProcessResult run = cli({"run", scenario("lane_change_10.yaml"), "--out", "o", "--set",
+                                 "start.y_m=1e9", "--set", "simulation.duration_s=1"});
+  EXPECT_EQ(run.exit_code, 1);
+  for (const char* part : {"controller_error", "at t = ", "invalid_input", "rear axle y",
+                           "ControllerInputRange", "1e+09"}) {
+    EXPECT_NE(run.err.find(part), std::string::npos) << part << " missing in " << run.err;
+  }
+}
+
+TEST_F(Cli, LongestLegalOutputNamesWork) {
+  const std::string name(255, 'o');
+  const ProcessResult run = cli({"run", scenario("lane_change_10.yaml"), "--out", name, "--set",
+                                 "simulation.duration_s=0.2"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(fs::exists(directory_ / name / "summary.json"));
+  const ProcessResult tune =
+      cli({"tune", "--vehicle", (source_dir() / "vehicles/passenger_car.yaml").string(), "--speeds",
+           "5:6:1", "--out", std::string(255, 't')});
+  EXPECT_EQ(tune.exit_code, 0) << tune.err;
+  EXPECT_TRUE(fs::exists(directory_ / std::string(255, 't')));
+}
+
+// The tuner's inputs: a directory, a FIFO, or a value run refuses.
+TEST_F(Cli, TuneRefusesWhatIsNotAVehicleFile) {
+  const ProcessResult directory =
+      cli({"tune", "--vehicle", directory_.string(), "--speeds", "5:6:1", "--out", "s.csv"});
+  EXPECT_EQ(directory.exit_code, 1);
+  EXPECT_NE(directory.err.find("is a directory"), std::string::npos) << directory.err;
+  EXPECT_EQ(directory.err.find("filesystem"), std::string::npos) << directory.err;
+  const fs::path fifo = directory_ / "fifo.yaml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto start = std::chrono::steady_clock::now();
+  const ProcessResult pipe =
+      cli({"tune", "--vehicle", fifo.string(), "--speeds", "5:6:1", "--out", "s.csv"});
+  EXPECT_EQ(pipe.exit_code, 1);
+  EXPECT_NE(pipe.err.find("not a regular file"), std::string::npos) << pipe.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+  std::string car = read_text(source_dir() / "vehicles/passenger_car.yaml");
+  const std::size_t b = car.find("stiffness_factor_b: 15.47");
+  ASSERT_NE(b, std::string::npos);
+  car.replace(b, 25, "stiffness_factor_b: .nan");
+  const ProcessResult nan =
+      cli({"tune", "--vehicle", write("nan.yaml", car), "--speeds", "5:6:1", "--out", "s.csv"});
+  EXPECT_EQ(nan.exit_code, 1);
+  EXPECT_NE(nan.err.find("'front_tire.stiffness_factor_b'"), std::string::npos) << nan.err;
+  const ProcessResult cycle = cli({"tune", "--vehicle", write("cycle.yaml", "a: &a [*a]\n"),
+                                   "--speeds", "5:6:1", "--out", "s.csv"});
+  EXPECT_EQ(cycle.exit_code, 1);
+  EXPECT_NE(cycle.err.find("cycle"), std::string::npos) << cycle.err;
+}
+
 TEST_F(Cli, SummaryWritesCountsAsIntegersAndTheToolVersion) {
   ASSERT_EQ(cli({"run", scenario("lane_change_10.yaml"), "--out", "o", "--set",
                  "simulation.duration_s=1"})

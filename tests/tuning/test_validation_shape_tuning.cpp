@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <stdexcept>
 
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/static_map.hpp"
@@ -29,6 +30,13 @@ TEST(ValidationShape, TunerStructs) {
   map.ratio_samples = 1;
   expect_shape(StaticMapOptions{}, map,
                "StaticMapOptions: ratio_samples = 1 must be in [2, 100000]");
+}
+
+// 1:1e300:1e-300 has 1e600 speeds: counted in double, refused before any integer holds it.
+TEST(ValidationShape, SpeedGridCountsBeforeItConverts) {
+  EXPECT_THROW(speed_grid(1.0, 1e300, 1e-300), std::invalid_argument);
+  EXPECT_THROW(speed_grid(1.0, 2e5, 1.0), std::invalid_argument);
+  EXPECT_EQ(speed_grid(1.0, 3.0, 0.5).size(), 5u);
 }
 
 }  // namespace

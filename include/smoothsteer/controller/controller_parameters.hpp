@@ -92,6 +92,10 @@ struct ControllerParameters {
   //! n: number of fictive wheels in front of the rear axle. The steering angle is C^(n-1) and
   //! its n-th derivative is bounded. n = 0 is the original (chattering) Dubins-car law.
   int order = 2;
+  //! Range of lambda_veh and of every lambda_i [m]: no car-like chain has a wheel 1 cm from
+  //! the next or 100 m away.
+  static constexpr double min_wheelbase_m = 0.01;
+  static constexpr double max_wheelbase_m = 100.0;
   //! lambda_veh: wheelbase of the real vehicle [m].
   double vehicle_wheelbase_m = 2.7;
   //! lambda_1..lambda_n [m]. lambda_1 is the fictive wheelbase lambda (paper Sec. III item 3),
@@ -188,6 +192,10 @@ struct ControllerParameters {
   //! wheelbase. A control period is split into at most max_substeps steps.
   double max_substep_fraction = 0.1;
   int max_substeps = 64;
+  //! Shortest sub-step max_substep_fraction * min lambda_i allowed [m]. update() counts the
+  //! sub-steps of a period as |v| dt / sub-step, at most 1e3 m/s * 1e3 s / 1e-3 m = 1e9 within
+  //! ControllerInputRange: an int, before max_substeps caps it.
+  static constexpr double min_substep_m = 1e-3;
 
   //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
   void validate() const;

@@ -57,11 +57,16 @@ class LeadWheelController final : public SteeringController {
   //! extended system receives kappa_n + kappa_d (paper Sec. III item 2: d psi_l / ds_l =
   //! kappa_l + kappa_d). The law stays convergent for |kappa_d| < k_rob kbar_sw, the switching
   //! part's authority (docs/feedforward.md, section 4).
+  //! Returns false, and keeps the previous value, for a non-finite kappa_d or one beyond
+  //! max_matched_disturbance_per_m: far beyond any robustness bound, it only breaks the arithmetic.
   bool set_matched_disturbance(double lead_curvature_disturbance) noexcept override {
-    matched_disturbance_ =
-        std::isfinite(lead_curvature_disturbance) ? lead_curvature_disturbance : 0.0;
+    if (!(std::abs(lead_curvature_disturbance) <= max_matched_disturbance_per_m)) return false;
+    matched_disturbance_ = lead_curvature_disturbance;
     return true;
   }
+  //! Largest |kappa_d| set_matched_disturbance accepts [1/m]: a 1 m radius, as the scenario
+  //! schema's simulation.matched_disturbance.
+  static constexpr double max_matched_disturbance_per_m = 1.0;
 
   const ControllerParameters& parameters() const noexcept { return parameters_; }
   const ChainBounds& bounds() const noexcept { return bounds_; }

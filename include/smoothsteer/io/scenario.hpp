@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,12 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
 //! Loads, overrides, validates. Relative file references (vehicle file, waypoint CSV) are
 //! resolved against the scenario's directory.
 Scenario load_scenario(const std::string& file, const std::vector<std::string>& overrides = {});
+
+//! Checks a vehicle mapping (a vehicle file's root) against the simulation's vehicle schema
+//! exactly as load_scenario() does, and returns its parameters; the keys in `skipped` are left
+//! out (the tuner's `wheelbase_m`). Throws ConfigError naming `file` and the key.
+VehicleParameters check_vehicle_mapping(const YAML::Node& vehicle, const std::string& file,
+                                        const std::set<std::string>& skipped = {});
 
 //! Builds the path of a `path:` section (used by load_scenario; public for tests and tools).
 std::shared_ptr<const Path> make_path(ConfigSection& path_section,

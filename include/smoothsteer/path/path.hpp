@@ -15,6 +15,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
+#include <optional>
 #include <vector>
 
 #include "smoothsteer/math/vec2.hpp"
@@ -64,6 +66,12 @@ class Path {
     bool compute_arc_length = true;
   };
 
+  //! Largest |coordinate| and radius of a path [m] (ControllerInputRange::max_abs_coordinate_m);
+  //! beyond it squares and products inside the projection overflow. Lengths may reach
+  //! max_length_m (a circle of radius max_extent_m), arcs need |curvature| >= 1 / max_extent_m.
+  static constexpr double max_extent_m = 1e9;
+  static constexpr double max_length_m = 1e10;
+
   //! An infinite-looking straight line: from `start` along `heading_rad`, `length_m` long, with
   //! both ends extended along the tangent.
   static Path straight_line(Vec2 start, double heading_rad, double length_m = 100.0);
@@ -72,8 +80,16 @@ class Path {
   static Path circle(Vec2 center, double radius_m, bool counter_clockwise = true,
                      double start_angle_rad = 0.0);
   //! A C2 natural cubic spline through the waypoints, chord-length parametrized. Heading and
-  //! curvature are continuous. Needs >= 2 points; consecutive duplicates are rejected by index.
+  //! curvature are continuous. Needs >= 2 points; consecutive duplicates and a turn sharper
+  //! than max_waypoint_turn_rad (find_reversal) are rejected by index.
   static Path from_waypoints(const std::vector<Vec2>& waypoints);
+  //! Sharpest turn from one chord of from_waypoints to the next [rad]. A sharper one doubles
+  //! back: the spline runs into a cusp (0 -> 30 -> 0 on one line) where no forward path goes;
+  //! a change of direction is a PathPlan with one piece per gear (docs/cusps.md).
+  static constexpr double max_waypoint_turn_rad = 2.0 * std::numbers::pi / 3.0;
+  //! Index of the first waypoint at which the chords turn by more than max_waypoint_turn_rad
+  //! (from_waypoints refuses it), or none. Readers use it to name the row of a file.
+  static std::optional<std::size_t> find_reversal(const std::vector<Vec2>& waypoints) noexcept;
   //! Builds from explicit segments (see PathBuilder); checks G1 continuity between consecutive
   //! segments (and end -> start if closed) within 1e-6 m and 1e-6 rad. The `s0` fields are
   //! recomputed; a cubic's `length` must match its coefficients.

@@ -150,6 +150,9 @@ struct SimulationResult {
   //! A NaN/inf appeared in the plant state or in a sample (the run stops before emitting it).
   bool non_finite = false;
   std::string stop_reason;  //!< "duration", "path_end", "controller_error" or "non_finite"
+  //! Why a run stopped early, for people: the time, the controller's status and the input
+  //! value outside ControllerInputRange, or the first non-finite value. Empty otherwise.
+  std::string stop_detail;
   std::uint64_t model_evaluations = 0;  //!< calls of VehicleModel::derivative (cost measure)
   //! Control periods that rkf78 / dopri5 left to fixed_rk4 because the exact actuator solution
   //! needed more segments than fit (src/sim/exact_actuator.hpp); expected 0.

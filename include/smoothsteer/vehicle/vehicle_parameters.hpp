@@ -30,6 +30,22 @@ struct TireParameters {
 std::optional<Violation> tire_violation(const char* owner, const char* prefix,
                                         const TireParameters& tire) noexcept;
 
+//! Physical ranges beyond "finite and > 0" (validation): values outside them describe no car
+//! and make the plant stiff, so that the adaptive integrators take 10 s per simulated second
+//! (mass 1e9 kg, Iz 0.01 kg m^2, B 1e6). Wide enough for a 1/10-scale model car and a mining
+//! truck. The dynamic index Iz / (m lf lr) is about 1 for cars (Rajamani, ch. 2).
+struct VehiclePhysicalRange {
+  static constexpr double min_mass_kg = 1.0;
+  static constexpr double max_mass_kg = 1e6;
+  static constexpr double min_dynamic_index = 0.1;
+  static constexpr double max_dynamic_index = 10.0;
+  static constexpr double min_wheelbase_m = 0.01;  //!< lf + lr, as ControllerParameters
+  static constexpr double max_wheelbase_m = 100.0;
+  static constexpr double max_gravity_mps2 = 100.0;
+  static constexpr double max_stiffness_factor_b = 100.0;  //!< Pacejka B [1/rad]; cars 5-30
+  static constexpr double max_friction_mu = 3.0;           //!< racing slicks reach about 2
+};
+
 struct VehicleParameters {
   double mass_kg = 1093.3;            //!< m [kg]
   double yaw_inertia_kgm2 = 1791.6;   //!< Iz [kg m^2]
