@@ -260,8 +260,11 @@ TEST_F(Cli, PeakMemoryDoesNotGrowWithTheDuration) {
 // Messages that named nothing: the controller error says when and which input, and a legal
 // --out of 255 bytes works.
 TEST_F(Cli, ControllerErrorsSayWhenAndWhy) {
-  const ProcessResult run = cli({"run", scenario("lane_change_10.yaml"), "--out", "o", "--set",
-                                 "start.y_m=1e9", "--set", "simulation.duration_s=1"});
+  // Heading away from the path, so that the car leaves the input range in the first period
+  // whatever the controller steers.
+  const ProcessResult run =
+      cli({"run", scenario("lane_change_10.yaml"), "--out", "o", "--set", "start.y_m=1e9", "--set",
+           "start.heading_rad=1.5", "--set", "simulation.duration_s=1"});
   EXPECT_EQ(run.exit_code, 1);
   for (const char* part : {"controller_error", "at t = ", "invalid_input", "rear axle y",
                            "ControllerInputRange", "1e+09"}) {
