@@ -54,6 +54,7 @@ enum class Law {
   preview,   //!< rate-limited feedforward with preview, as the certified schedules use it
   exact,     //!< the same with the exact rear-axle target and the single-track inversion
   planned,   //!< the same with the planned curvature jumps (jump_plan.hpp)
+  governed,  //!< the exact target with the steering governor (docs/governor.md), the car's limits
   paper,     //!< the paper's law: no feedforward, the lead wheel on the path
 };
 
@@ -61,14 +62,21 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
   ControllerParameters parameters;
   parameters.order = order;
   parameters.lead_curvature_bound = 0.1;
-  if (law == Law::preview || law == Law::exact || law == Law::planned) {
+  if (law == Law::preview || law == Law::exact || law == Law::planned || law == Law::governed) {
     parameters.feedforward_curvature_rate = 0.005;
   }
-  if (law == Law::exact || law == Law::planned) {
+  if (law == Law::exact || law == Law::planned || law == Law::governed) {
     parameters.cornering_target = CorneringTarget::rear_axle_exact;
     parameters.rear_slip_gradient_s2pm = parameters.front_slip_gradient_s2pm = 0.00465;
   }
   if (law == Law::planned) parameters.curvature_preview = CurvaturePreview::planned_jumps;
+  if (law == Law::governed && order >= 1 && order <= 2) {
+    parameters.governor.enabled = true;
+    parameters.governor.max_steering_rate_radps = 0.4;
+    parameters.governor.max_steering_acceleration_radps2 = 8.0;
+    parameters.governor.law_length_m = 6.0;
+    parameters.governor.certified_switching_bound = 0.005;
+  }
   if (law == Law::paper) {
     parameters.feedforward_share = 0.0;
     parameters.boundary_layer = 0.0;
@@ -107,6 +115,9 @@ void BM_UpdateCurvedPath10kExactTarget(benchmark::State& state) {
 }
 void BM_UpdateCurvedPath10kPlannedJumps(benchmark::State& state) {
   update_cost(state, curved_path(), Law::planned);
+}
+void BM_UpdateCurvedPath10kGoverned(benchmark::State& state) {
+  update_cost(state, curved_path(), Law::governed);
 }
 void BM_UpdateCircleSectionsExactTarget(benchmark::State& state) {
   update_cost(state, circle_sections_path(), Law::exact);
@@ -148,6 +159,7 @@ BENCHMARK(BM_UpdateCurvedPath10k)
 BENCHMARK(BM_UpdateCurvedPath10kPreview)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kExactTarget)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kPlannedJumps)->Arg(1)->Arg(2);
+BENCHMARK(BM_UpdateCurvedPath10kGoverned)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCircleSectionsExactTarget)->Arg(2);
 BENCHMARK(BM_UpdateCircleSectionsPlannedJumps)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kPaperLaw)->Arg(1)->Arg(2);
