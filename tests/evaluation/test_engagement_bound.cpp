@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -155,7 +156,10 @@ TEST(EngagementBound, GrowsWithTheHeadingErrorOnAStraightPath) {
 }
 
 TEST(EngagementBound, RandomEngagementsConverge) {
-  for (int index = 0; index < testing::property_cases(3); ++index) {
+  // One Ipopt solve of the whole lane change per case (0.4-2.5 s): the count follows the
+  // environment up to 20, so that CI's large counts do not spend minutes here.
+  const int cases = std::min(testing::property_cases(3), 20);
+  for (int index = 0; index < cases; ++index) {
     const auto seed = testing::case_seed(index);
     testing::Random random(seed + 11);
     const int speed = std::array{10, 15, 19}[static_cast<std::size_t>(random.integer(0, 2))];
