@@ -12,17 +12,12 @@
 #include <array>
 #include <cmath>
 
+#include "gauss_legendre.hpp"
 #include "path_detail.hpp"
 #include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer::detail {
 namespace {
-
-// 8-point Gauss-Legendre rule on [-1, 1] (symmetric nodes, positive half listed).
-constexpr std::array<double, 4> kNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                       0.9602898564975363};
-constexpr std::array<double, 4> kWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                         0.1012285362903763};
 
 //! Largest turning integral(|kappa|) of one quadrature piece [rad]. A piece of turning tau also
 //! has |c| h^2 <= 4 tau, so the quadratic part of the phase is bounded as well.
@@ -55,12 +50,12 @@ Pose advance(const Pose& from, double c, double h) noexcept {
   for (int j = 0; j < pieces; ++j) {
     const double middle = (j + 0.5) * piece;
     double sx = 0.0, sy = 0.0;
-    for (std::size_t i = 0; i < kNodes.size(); ++i) {
+    for (std::size_t i = 0; i < gauss_legendre_8_nodes.size(); ++i) {
       for (const double side : {-1.0, 1.0}) {
-        const double u = middle + side * 0.5 * piece * kNodes[i];
+        const double u = middle + side * 0.5 * piece * gauss_legendre_8_nodes[i];
         const double phase = u * (k + 0.5 * c * u);
-        sx += kWeights[i] * std::cos(phase);
-        sy += kWeights[i] * std::sin(phase);
+        sx += gauss_legendre_8_weights[i] * std::cos(phase);
+        sy += gauss_legendre_8_weights[i] * std::sin(phase);
       }
     }
     x += 0.5 * piece * sx;

@@ -6,19 +6,12 @@
 #include <array>
 #include <cmath>
 
+#include "gauss_legendre.hpp"
 #include "path_detail.hpp"
 #include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer::detail {
 namespace {
-
-// 8-point Gauss-Legendre rule on [-1, 1] (symmetric nodes, positive half listed). |p'(t)| is
-// the square root of a quartic; for the chord-length parametrized spline it is nearly constant
-// and 8 points integrate it to ~1e-12 relative.
-constexpr std::array<double, 4> kNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                       0.9602898564975363};
-constexpr std::array<double, 4> kWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                         0.1012285362903763};
 
 constexpr int kMaxNewtonIterations = 30;
 
@@ -85,9 +78,11 @@ PathPoint cubic_point(const PathSegment& segment, double t) noexcept {
 double cubic_arc_length(const PathSegment& segment, double t) noexcept {
   const double half = 0.5 * t;
   double sum = 0.0;
-  for (std::size_t i = 0; i < kNodes.size(); ++i) {
-    sum += kWeights[i] *
-           (speed(segment, half * (1.0 - kNodes[i])) + speed(segment, half * (1.0 + kNodes[i])));
+  // |p'(t)| is the square root of a quartic; for the chord-length parametrized spline it is
+  // nearly constant and the 8-point rule integrates it to ~1e-12 relative.
+  for (std::size_t i = 0; i < gauss_legendre_8_nodes.size(); ++i) {
+    sum += gauss_legendre_8_weights[i] * (speed(segment, half * (1.0 - gauss_legendre_8_nodes[i])) +
+                                          speed(segment, half * (1.0 + gauss_legendre_8_nodes[i])));
   }
   return half * sum;
 }
