@@ -412,8 +412,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       const double wanted =
           layer > 0.0 ? std::clamp(std::abs(near.sliding_variable) / layer - 1.0, 0.0, 1.0) : 1.0;
       far_share_ = std::max(wanted, far_share_ - step_length / SteeringGovernor::far_law_memory_m);
-      const double far_share = far_share_;
-      lead.law.curvature = far_share * lead.law.curvature + (1.0 - far_share) * near.curvature;
+      lead.law.curvature = far_share_ * lead.law.curvature + (1.0 - far_share_) * near.curvature;
     }
     if (step == 0) first = lead;
     // kappa_ff moves towards its target by at most L_ff per metre, linearly within the sub-step,
@@ -457,7 +456,9 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     const double front_before = angles_[0];
     integrate_chain(angles_, wheelbases, n, start_curvature, applied_curvature, step_length,
                     bounds_.angle);
-    if (governed) {
+    if (governed && n == 1) {
+      // Only n = 1 bounds the rate's change from one sub-step to the next (for n = 2 the
+      // interval reads the rate from the chain's state).
       governor_step.previous_rate_radps =
           steering_derivatives(angles_, parameters_, direction_, speed_magnitude, 0.0,
                                applied_curvature)

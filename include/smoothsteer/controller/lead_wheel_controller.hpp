@@ -150,8 +150,8 @@ class LeadWheelController final : public SteeringController {
   }
   Pose2 predicted_pose(const ControllerInput& input) const noexcept;
   double direction_ = 1.0;
-  //! The governor's memory (ControllerParameters::governor): the command's rate at the end of the
-  //! last sub-step, and |v| of the last period for the speed change between periods.
+  //! The governor's memory (ControllerParameters::governor): for n = 1 the command's rate at the
+  //! end of the last sub-step, and |v| of the last period for the speed change between periods.
   double governor_rate_ = 0.0;
   double feedforward_envelope_ = 0.0;  //!< decaying max of |kappa_ff| (the far law's authority)
   double far_share_ = 0.0;             //!< weight of the far law in kappa_sw, in [0, 1]
