@@ -14,6 +14,7 @@
 namespace smoothsteer {
 
 class Path;
+class LeadWheelController;
 
 struct ControllerInput {
   Vec2 rear_axle_position;         //!< rear-axle reference point in the world frame [m]
@@ -135,6 +136,9 @@ class SteeringController {
     (void)lead_curvature_disturbance;
     return false;
   }
+  //! The lead-wheel controller a wrapper runs (a gain schedule's), for diagnostics
+  //! (SteeringSystem's active limits); nullptr for every other controller.
+  virtual const LeadWheelController* inner_lead_wheel() const noexcept { return nullptr; }
 
  protected:
   //! The controller's own step, called by update() with an input in range; `output` holds the

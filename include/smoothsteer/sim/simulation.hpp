@@ -18,6 +18,7 @@
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/sim/speed_profile.hpp"
+#include "smoothsteer/system/steering_system.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "smoothsteer/vehicle/steering_actuator.hpp"
 #include "smoothsteer/vehicle/vehicle_model.hpp"
@@ -176,5 +177,28 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
                           SteeringController& controller, const TraceObserver& observer);
+
+//! The car's steering system that the controller overloads above drive: `controller` with the
+//! slip input of parameters.side_slip (none: kinematic, truth: the plant's slip as a sensor,
+//! observer: SideSlipObserver believing the vehicle file times the scales, with the tire model,
+//! and trusting its sensors as much as their simulated noise says).
+SteeringSystemParameters steering_system_parameters(const SideSlipEstimation& slip,
+                                                    const VehicleParameters& vehicle);
+
+//! Runs the closed loop with a car's steering system (the one wiring: the controller overloads
+//! build one with steering_system_parameters() and call this). The system is reset first. Its
+//! own slip input decides what it reads; parameters.side_slip gives only the simulated
+//! sensors' noise (its source, scales and tire model configure the controller overloads'
+//! system). The sensors: rear-axle pose (pose noise), speed, dv/dt of the profile, yaw rate and
+//! lateral acceleration at the CG (noise drawn only for an observer), the actuator's angle as
+//! the measured steering angle and the plant's rear-axle slip as the slip sensor.
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringSystem& system);
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringSystem& system, const TraceObserver& observer);
 
 }  // namespace smoothsteer

@@ -34,6 +34,7 @@ class ScheduledController final : public SteeringController {
   bool set_matched_disturbance(double kappa_d) noexcept override {
     return controller_.set_matched_disturbance(kappa_d);
   }
+  const LeadWheelController* inner_lead_wheel() const noexcept override { return &controller_; }
 
  private:
   GainSchedule schedule_;

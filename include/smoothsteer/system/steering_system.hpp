@@ -1,0 +1,176 @@
+#pragma once
+//! \file steering_system.hpp
+//! One real-time object per car: the steering controller and what it needs from the car's
+//! sensors, wired once. update() takes what a car's buses and localization give (rear-axle pose,
+//! speed, longitudinal acceleration, yaw rate, lateral acceleration, and the measured road-wheel
+//! angle where there is one), estimates the rear axle's side slip beta_r with SideSlipObserver
+//! (the law steers the course psi + beta_r, docs/vehicle_dynamics.md), runs the controller, and
+//! returns the command, its derivatives and diagnostics: the observer's estimate and which limit
+//! is active. The delay compensation (Smith predictor), the feedforward's single-track inversion
+//! and the friction guard are the controller's own (ControllerParameters). The simulator drives
+//! this same object (sim/simulation.hpp), so a car and the simulation share one wiring.
+//!
+//! \code
+//!   smoothsteer::SteeringSystem system = smoothsteer::make_steering_system(car, path);
+//!   smoothsteer::SteeringSystemOutput out;
+//!   system.update({.rear_axle_position = {x, y}, .heading_rad = psi, .speed_mps = v,
+//!                  .yaw_rate_radps = r, .lateral_acceleration_mps2 = ay, .period_s = 0.02}, out);
+//!   actuator.command(out.steering_angle_rad);
+//! \endcode
+//! update() is noexcept, allocation free and deterministic; set_path() has the controller's
+//! contract (SteeringController::set_path). Set-up (construction) throws std::invalid_argument.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/controller/steering_controller.hpp"
+#include "smoothsteer/math/vec2.hpp"
+#include "smoothsteer/path/path.hpp"
+#include "smoothsteer/status.hpp"
+#include "smoothsteer/validation.hpp"
+#include "smoothsteer/vehicle/side_slip_observer.hpp"
+#include "smoothsteer/vehicle/vehicle_parameters.hpp"
+
+namespace smoothsteer {
+
+class LeadWheelController;
+
+//! Where the rear axle's side slip beta_r that the law steers comes from.
+enum class SlipInput {
+  kinematic,  //!< beta_r = 0: the kinematic assumption (course = heading)
+  sensor,     //!< SteeringSystemInput::rear_axle_side_slip_rad (a slip sensor; 0 when absent)
+  observer,   //!< SideSlipObserver on yaw rate, lateral acceleration, speed and steering angle
+};
+
+struct SteeringSystemParameters {
+  SlipInput slip_input = SlipInput::observer;
+  //! The observer's model and sensor noise (used for SlipInput::observer only).
+  SideSlipObserverParameters observer{};
+
+  //! The vehicle file's observer (SideSlipObserverParameters::from_vehicle) with `tire_model`.
+  static SteeringSystemParameters from_vehicle(
+      const VehicleParameters& vehicle, ObserverTireModel tire_model = ObserverTireModel::linear);
+
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  std::string validation_error() const;
+  void validate() const;  //!< throws std::invalid_argument
+};
+
+//! What a car's buses and localization give, once per control period.
+struct SteeringSystemInput {
+  Vec2 rear_axle_position;                 //!< rear-axle reference point, world frame [m]
+  double heading_rad = 0.0;                //!< psi [rad]
+  double speed_mps = 0.0;                  //!< signed longitudinal speed v [m/s]
+  double acceleration_mps2 = 0.0;          //!< dv/dt [m/s^2]
+  double yaw_rate_radps = 0.0;             //!< r, gyro [rad/s]
+  double lateral_acceleration_mps2 = 0.0;  //!< a_y at the CG, accelerometer [m/s^2]
+  double period_s = 0.02;                  //!< control period dt [s]
+  //! Measured road-wheel angle delta [rad]; absent: the observer assumes the last command.
+  std::optional<double> steering_angle_rad;
+  //! A slip sensor's beta_r [rad] (SlipInput::sensor); absent: 0.
+  std::optional<double> rear_axle_side_slip_rad;
+};
+
+//! Which limits the command is at (a bit set; SteeringSystemOutput::active_limits). Derived from
+//! the lead-wheel controller's state after the step; 0 for other controllers.
+enum ActiveLimit : std::uint32_t {
+  limit_none = 0,
+  //! |kappa_n| at kbar_n: the lead wheel's whole curvature authority is used.
+  limit_lead_curvature = 1u << 0,
+  //! |kappa_ff| at kbar_ff: the feedforward is saturated.
+  limit_feedforward_bound = 1u << 1,
+  //! The friction guard (ControllerParameters::max_lateral_acceleration_mps2) binds at this speed.
+  limit_friction_guard = 1u << 2,
+  //! |kappa_n - kappa_ff| at or beyond kbar_sw: the switching part uses its certified authority.
+  limit_switching_bound = 1u << 3,
+  //! The chain's front angle delta_1 at its invariant-set bound (the steering angle limit).
+  limit_steering_angle = 1u << 4,
+};
+//! "lead_curvature|friction_guard", or "none".
+std::string describe_active_limits(std::uint32_t limits);
+
+//! The rear axle's side slip as the system sees it.
+struct SideSlipDiagnostics {
+  double rear_axle_side_slip_rad = 0.0;  //!< beta_r given to the law [rad]
+  double side_slip_rad = 0.0;            //!< observer's beta at the CG [rad] (0 without one)
+  double lateral_velocity_mps = 0.0;     //!< observer's vy [m/s]
+  double yaw_rate_radps = 0.0;           //!< observer's filtered r [rad/s]
+  //! The observer's update() status (ok without an observer). Not ok: beta_r = 0 this period.
+  Status observer_status = Status::ok;
+};
+
+struct SteeringSystemOutput {
+  double steering_angle_rad = 0.0;            //!< delta_veh command [rad]
+  double steering_rate_radps = 0.0;           //!< valid if derivatives_available >= 1
+  double steering_acceleration_radps2 = 0.0;  //!< valid if derivatives_available >= 2
+  int derivatives_available = 0;
+  TrackingDiagnostics tracking;     //!< the controller's diagnostics
+  SideSlipDiagnostics side_slip;    //!< the observer's estimate
+  std::uint32_t active_limits = 0;  //!< ActiveLimit bits
+};
+
+class SteeringSystem {
+ public:
+  //! Owns `controller` (any SteeringController). Throws std::invalid_argument for a null
+  //! controller or invalid parameters, naming the field.
+  SteeringSystem(std::unique_ptr<SteeringController> controller,
+                 const SteeringSystemParameters& parameters);
+  //! Borrows `controller`, which must outlive the system (the simulator's use).
+  SteeringSystem(SteeringController& controller, const SteeringSystemParameters& parameters);
+  //! The lead-wheel controller with `controller` on `path`, and the vehicle's observer. Throws
+  //! std::invalid_argument naming the field when the parameters are invalid, the path is null,
+  //! or controller.vehicle_wheelbase_m is not the vehicle's lf + lr.
+  SteeringSystem(const VehicleParameters& vehicle, const ControllerParameters& controller,
+                 std::shared_ptr<const Path> path, SlipInput slip_input = SlipInput::observer);
+
+  SteeringSystem(SteeringSystem&&) noexcept = default;
+  SteeringSystem& operator=(SteeringSystem&&) noexcept = default;
+
+  //! One control period. Status as SteeringController::update (the output stays unchanged on
+  //! an error); an observer that rejects its measurement gives beta_r = 0 for this period and
+  //! reports its status in side_slip.observer_status.
+  Status update(const SteeringSystemInput& input, SteeringSystemOutput& output) noexcept;
+  //! Restarts the controller at the measured steering angle and the observer from straight
+  //! driving.
+  void reset(double measured_steering_angle_rad = 0.0) noexcept;
+  //! Replanning: SteeringController::set_path's contract.
+  Status set_path(std::shared_ptr<const Path> path) noexcept {
+    return controller_->set_path(std::move(path));
+  }
+  //! Evaluation hook: SteeringController::set_matched_disturbance.
+  bool set_matched_disturbance(double lead_curvature_disturbance) noexcept {
+    return controller_->set_matched_disturbance(lead_curvature_disturbance);
+  }
+
+  const SteeringController& controller() const noexcept { return *controller_; }
+  //! The observer (nullptr unless SlipInput::observer).
+  const SideSlipObserver* observer() const noexcept { return observer_ ? &*observer_ : nullptr; }
+  const SteeringSystemParameters& parameters() const noexcept { return parameters_; }
+  //! What the last update() gave the controller (its beta_r included), e.g. for error reports.
+  const ControllerInput& controller_input() const noexcept { return controller_input_; }
+
+ private:
+  void set_up(const SteeringSystemParameters& parameters);
+  double rear_axle_side_slip(const SteeringSystemInput& input, SideSlipDiagnostics& slip) noexcept;
+
+  std::unique_ptr<SteeringController> owned_;
+  SteeringController* controller_ = nullptr;
+  //! The lead-wheel controller in controller_ (itself or a schedule's), for active_limits.
+  const LeadWheelController* lead_wheel_ = nullptr;
+  SteeringSystemParameters parameters_;
+  std::optional<SideSlipObserver> observer_;
+  ControllerInput controller_input_;
+  ControllerOutput controller_output_;  //!< the previous output, as update() expects
+  double last_command_rad_ = 0.0;
+};
+
+//! ActiveLimit bits of a lead-wheel controller after its step at |v| = `speed_mps`.
+std::uint32_t active_limits(const LeadWheelController& controller, const ControllerOutput& output,
+                            double speed_mps) noexcept;
+
+}  // namespace smoothsteer

@@ -1,0 +1,228 @@
+// The closed loop of simulate() (simulation.hpp): the plant, the simulated sensors and the car's
+// SteeringSystem, sampled with a zero-order hold. The sensors report what a car's buses and
+// localization would: the rear-axle pose (with the configured noise), the speed, the yaw rate
+// and lateral acceleration at the CG (with the configured noise), the road-wheel angle, and the
+// true rear-axle slip for a system that reads a slip sensor.
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "plant_integration.hpp"
+#include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/sim/closed_loop_count.hpp"
+#include "smoothsteer/sim/simulation.hpp"
+
+namespace smoothsteer {
+namespace {
+
+bool finite(const VehicleState& s) {
+  for (double v : s.to_array()) {
+    if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
+bool all_finite(const TraceSample& sample) {
+  for (double v : trace_values(sample)) {
+    if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
+std::string text(double value) {
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+//! "at t = T s: the controller returned S: <which input is out of range, and its bound>".
+std::string controller_error_detail(Status status, const ControllerInput& input, double t) {
+  using R = ControllerInputRange;
+  std::string detail = "at t = " + text(t) + " s the controller returned " + to_string(status);
+  const struct {
+    const char* name;
+    double value;
+    double bound;
+    const char* unit;
+  } checks[] = {
+      {"rear axle x", input.rear_axle_position.x, R::max_abs_coordinate_m, "m"},
+      {"rear axle y", input.rear_axle_position.y, R::max_abs_coordinate_m, "m"},
+      {"heading", input.heading_rad, R::max_abs_heading_rad, "rad"},
+      {"speed", input.speed_mps, R::max_abs_speed_mps, "m/s"},
+      {"acceleration", input.acceleration_mps2, R::max_abs_acceleration_mps2, "m/s^2"},
+      {"rear-axle side slip", input.rear_axle_side_slip_rad, ControllerInput::max_side_slip_rad,
+       "rad"},
+  };
+  for (const auto& check : checks) {
+    if (!(std::abs(check.value) <= check.bound)) {
+      return detail + ": its input " + check.name + " = " + text(check.value) + " " + check.unit +
+             " is outside ControllerInputRange (magnitude <= " + text(check.bound) + " " +
+             check.unit + ")";
+    }
+  }
+  if (status == Status::numerical_error) {
+    return detail + ": a value inside the controller became non-finite";
+  }
+  return detail + " for an input within ControllerInputRange";
+}
+
+}  // namespace
+
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator_parameters, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringSystem& system, const TraceObserver& observer) {
+  parameters.validate();
+  speed.validate();
+  detail::count_closed_loop();
+  const VehicleParameters& car = vehicle.parameters();
+  SteeringActuator actuator(actuator_parameters, parameters.substep_s);
+  actuator.reset(0.0);
+  const int substeps =
+      static_cast<int>(std::lround(parameters.control_period_s / parameters.substep_s));
+  const long steps =
+      static_cast<long>(std::ceil(parameters.duration_s / parameters.control_period_s - 1e-9));
+
+  SimulationResult result;
+  std::vector<double> input_buffer(static_cast<std::size_t>(substeps));
+  VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
+  vehicle.constrain(state, 0.0);
+  system.reset(0.0);
+  // Matched disturbance: into the controller's chain where it has one, else into the plant.
+  const double plant_disturbance = parameters.plant_curvature_disturbance +
+                                   (system.set_matched_disturbance(parameters.matched_disturbance)
+                                        ? 0.0
+                                        : parameters.matched_disturbance);
+  const detail::PlantContext plant{vehicle,
+                                   speed,
+                                   actuator,
+                                   plant_disturbance,
+                                   parameters.substep_s,
+                                   substeps,
+                                   parameters.integrator,
+                                   parameters.integrator_tolerance,
+                                   &result.model_evaluations,
+                                   &result.plant_fallback_periods,
+                                   input_buffer.data()};
+
+  std::mt19937_64 engine(parameters.noise_seed);
+  std::normal_distribution<double> unit_normal(0.0, 1.0);
+  const SideSlipEstimation& sensors = parameters.side_slip;
+  // Only the observer reads the gyro and the accelerometer; their noise is drawn for it alone,
+  // so that a run's noise sequence does not depend on sensors nobody reads.
+  const bool observed = system.parameters().slip_input == SlipInput::observer;
+  ProjectionHint rear_hint, front_hint;
+  SteeringSystemOutput output;
+  double distance = 0.0;
+  double previous_command = 0.0, previous_rate = 0.0;
+  double delayed_input = 0.0;
+  result.stop_reason = "duration";
+
+  for (long k = 0; k <= steps; ++k) {
+    const double t = static_cast<double>(k) * parameters.control_period_s;
+    const Pose2 rear = rear_axle_pose(state, car);
+    SteeringSystemInput input;
+    input.rear_axle_position = rear.position;
+    input.heading_rad = rear.heading_rad;
+    input.speed_mps = state.vx_mps;
+    input.acceleration_mps2 = speed.acceleration(t);
+    input.period_s = parameters.control_period_s;
+    if (parameters.position_noise_std_m > 0.0 || parameters.heading_noise_std_rad > 0.0) {
+      input.rear_axle_position.x += parameters.position_noise_std_m * unit_normal(engine);
+      input.rear_axle_position.y += parameters.position_noise_std_m * unit_normal(engine);
+      input.heading_rad += parameters.heading_noise_std_rad * unit_normal(engine);
+    }
+    const double true_rear_slip = rear_axle_side_slip_angle(state, car);
+    input.rear_axle_side_slip_rad = true_rear_slip;
+    input.steering_angle_rad = actuator.angle();
+    if (observed) {
+      const VehicleState rates =
+          vehicle.derivative(state, actuator.angle(), input.acceleration_mps2);
+      input.yaw_rate_radps = state.yaw_rate_radps;
+      input.lateral_acceleration_mps2 = rates.vy_mps + state.vx_mps * state.yaw_rate_radps;
+      if (sensors.yaw_rate_noise_std_radps > 0.0) {
+        input.yaw_rate_radps += sensors.yaw_rate_noise_std_radps * unit_normal(engine);
+      }
+      if (sensors.lateral_acceleration_noise_std_mps2 > 0.0) {
+        input.lateral_acceleration_mps2 +=
+            sensors.lateral_acceleration_noise_std_mps2 * unit_normal(engine);
+      }
+    }
+    const Status status = system.update(input, output);
+    if (status != Status::ok) {
+      result.status = status;
+      result.stop_reason = "controller_error";
+      result.stop_detail = controller_error_detail(status, system.controller_input(), t);
+      break;
+    }
+    const double command = output.steering_angle_rad;
+    TraceSample sample;
+    sample.time_s = t;
+    sample.distance_m = distance;
+    sample.rear_axle = rear;
+    sample.speed_mps = state.vx_mps;
+    sample.acceleration_mps2 = input.acceleration_mps2;
+    const PathProjection rear_projection = path.project(rear.position, rear_hint);
+    const PathProjection front_projection =
+        path.project(front_axle_position(state, car), front_hint);
+    sample.path_arc_length_m = rear_projection.arc_length_m;
+    sample.path_curvature = rear_projection.curvature;
+    sample.lateral_error_m = rear_projection.lateral_error_m;
+    sample.heading_error_rad = wrap_angle(rear.heading_rad - rear_projection.heading_rad);
+    sample.front_lateral_error_m = front_projection.lateral_error_m;
+    sample.lead_lateral_error_m = output.tracking.lead_lateral_error_m;
+    sample.measured_lateral_error_m = output.tracking.lateral_error_m;
+    sample.sliding_variable = output.tracking.sliding_variable;
+    sample.lead_curvature = output.tracking.lead_curvature;
+    sample.steering_command_rad = command;
+    const double difference_rate =
+        k > 0 ? (command - previous_command) / parameters.control_period_s : 0.0;
+    sample.steering_command_rate_radps =
+        output.derivatives_available >= 1 ? output.steering_rate_radps : difference_rate;
+    sample.steering_command_acceleration_radps2 =
+        output.derivatives_available >= 2
+            ? output.steering_acceleration_radps2
+            : (k > 0 ? (sample.steering_command_rate_radps - previous_rate) /
+                           parameters.control_period_s
+                     : 0.0);
+    previous_command = command;
+    previous_rate = sample.steering_command_rate_radps;
+    sample.steering_actual_rad = actuator.angle();
+    sample.steering_actual_rate_radps = actuator.rate(delayed_input);
+    sample.steering_actual_acceleration_radps2 = actuator.acceleration(delayed_input);
+    sample.side_slip_rad = side_slip_angle(state);
+    sample.rear_side_slip_rad = true_rear_slip;
+    sample.rear_side_slip_input_rad = output.side_slip.rear_axle_side_slip_rad;
+    sample.lateral_velocity_mps = state.vy_mps;
+    sample.yaw_rate_radps = state.yaw_rate_radps;
+    if (!all_finite(sample)) {
+      result.non_finite = true;
+      result.stop_reason = "non_finite";
+      result.stop_detail = "at t = " + text(t) + " s a trace value became non-finite";
+      break;
+    }
+    observer(sample);
+
+    if (parameters.stop_at_path_end && !path.is_closed() &&
+        rear_projection.arc_length_m > path.length() + parameters.stop_beyond_path_end_m) {
+      result.stop_reason = "path_end";
+      break;
+    }
+    if (k == steps) break;
+    // Zero-order hold of the command over the control period (src/sim/plant_integration.hpp).
+    delayed_input = detail::advance_plant(plant, t, command, state, distance);
+    if (!finite(state)) {
+      result.non_finite = true;
+      result.stop_reason = "non_finite";
+      result.stop_detail = "after t = " + text(t) + " s the plant state became non-finite";
+      break;
+    }
+  }
+  result.final_state = state;
+  return result;
+}
+
+}  // namespace smoothsteer

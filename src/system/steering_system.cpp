@@ -1,0 +1,153 @@
+#include "smoothsteer/system/steering_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
+
+namespace smoothsteer {
+namespace {
+
+const LeadWheelController* find_lead_wheel(const SteeringController& controller) noexcept {
+  if (const auto* own = dynamic_cast<const LeadWheelController*>(&controller)) return own;
+  return controller.inner_lead_wheel();
+}
+
+//! The lead-wheel controller for the constructor that builds one: its wheelbase must be the car's.
+std::unique_ptr<SteeringController> lead_wheel_for(const VehicleParameters& vehicle,
+                                                   const ControllerParameters& controller,
+                                                   std::shared_ptr<const Path> path) {
+  vehicle.validate();
+  const double wheelbase = vehicle.wheelbase_m();
+  if (!(std::abs(controller.vehicle_wheelbase_m - wheelbase) <= 1e-9 * wheelbase)) {
+    throw std::invalid_argument(describe(
+        Violation{"ControllerParameters", "", "vehicle_wheelbase_m", controller.vehicle_wheelbase_m,
+                  "must be the vehicle's wheelbase lf + lr =", wheelbase}));
+  }
+  if (!path) throw std::invalid_argument("SteeringSystem: path is null; a path is required");
+  return std::make_unique<LeadWheelController>(controller, std::move(path));
+}
+
+}  // namespace
+
+SteeringSystemParameters SteeringSystemParameters::from_vehicle(const VehicleParameters& vehicle,
+                                                                ObserverTireModel tire_model) {
+  SteeringSystemParameters parameters;
+  parameters.observer = SideSlipObserverParameters::from_vehicle(vehicle, 1.0, 1.0, tire_model);
+  return parameters;
+}
+
+std::optional<Violation> SteeringSystemParameters::first_violation() const noexcept {
+  RuleChecker check("SteeringSystemParameters");
+  const int source = static_cast<int>(slip_input);
+  check.require(source >= 0 && source <= static_cast<int>(SlipInput::observer), "slip_input",
+                source, "must be 0 (kinematic), 1 (sensor) or 2 (observer)");
+  if (slip_input == SlipInput::observer) {
+    if (std::optional<Violation> nested = observer.first_violation()) {
+      nested->owner = "SteeringSystemParameters";
+      nested->prefix = "observer.";
+      check.include(nested);
+    }
+  }
+  return check.first();
+}
+
+std::string SteeringSystemParameters::validation_error() const {
+  return describe(first_violation());
+}
+
+void SteeringSystemParameters::validate() const {
+  throw_if_violated(first_violation());
+}
+
+SteeringSystem::SteeringSystem(std::unique_ptr<SteeringController> controller,
+                               const SteeringSystemParameters& parameters)
+    : owned_(std::move(controller)) {
+  if (!owned_) {
+    throw std::invalid_argument("SteeringSystem: controller is null; a controller is required");
+  }
+  controller_ = owned_.get();
+  set_up(parameters);
+}
+
+SteeringSystem::SteeringSystem(SteeringController& controller,
+                               const SteeringSystemParameters& parameters)
+    : controller_(&controller) {
+  set_up(parameters);
+}
+
+SteeringSystem::SteeringSystem(const VehicleParameters& vehicle,
+                               const ControllerParameters& controller,
+                               std::shared_ptr<const Path> path, SlipInput slip_input)
+    : owned_(lead_wheel_for(vehicle, controller, std::move(path))) {
+  controller_ = owned_.get();
+  SteeringSystemParameters parameters = SteeringSystemParameters::from_vehicle(vehicle);
+  parameters.slip_input = slip_input;
+  set_up(parameters);
+}
+
+void SteeringSystem::set_up(const SteeringSystemParameters& parameters) {
+  parameters.validate();
+  parameters_ = parameters;
+  lead_wheel_ = find_lead_wheel(*controller_);
+  if (parameters_.slip_input == SlipInput::observer) observer_.emplace(parameters_.observer);
+}
+
+void SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
+  controller_->reset(measured_steering_angle_rad);
+  if (observer_) observer_->reset();
+  controller_output_ = {};
+  last_command_rad_ =
+      std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
+}
+
+double SteeringSystem::rear_axle_side_slip(const SteeringSystemInput& input,
+                                           SideSlipDiagnostics& slip) noexcept {
+  switch (parameters_.slip_input) {
+    case SlipInput::kinematic:
+      return 0.0;
+    case SlipInput::sensor:
+      // As measured: beyond ControllerInput::max_side_slip_rad the controller rejects it.
+      return input.rear_axle_side_slip_rad.value_or(0.0);
+    case SlipInput::observer:
+      break;
+  }
+  SideSlipMeasurement measurement;
+  measurement.speed_mps = input.speed_mps;
+  measurement.yaw_rate_radps = input.yaw_rate_radps;
+  measurement.lateral_acceleration_mps2 = input.lateral_acceleration_mps2;
+  measurement.steering_angle_rad = input.steering_angle_rad.value_or(last_command_rad_);
+  slip.observer_status = observer_->update(measurement, input.period_s);
+  slip.side_slip_rad = observer_->side_slip_rad();
+  slip.lateral_velocity_mps = observer_->lateral_velocity_mps();
+  slip.yaw_rate_radps = observer_->yaw_rate_radps();
+  if (slip.observer_status != Status::ok) return 0.0;
+  // The estimate is clamped to what the controller accepts (docs/vehicle_dynamics.md).
+  return std::clamp(observer_->rear_axle_side_slip_rad(), -ControllerInput::max_side_slip_rad,
+                    ControllerInput::max_side_slip_rad);
+}
+
+Status SteeringSystem::update(const SteeringSystemInput& input,
+                              SteeringSystemOutput& output) noexcept {
+  SideSlipDiagnostics slip;
+  controller_input_ = {input.rear_axle_position, input.heading_rad, input.speed_mps,
+                       input.acceleration_mps2, input.period_s};
+  controller_input_.rear_axle_side_slip_rad = rear_axle_side_slip(input, slip);
+  slip.rear_axle_side_slip_rad = controller_input_.rear_axle_side_slip_rad;
+  const Status status = controller_->update(controller_input_, controller_output_);
+  if (status != Status::ok) return status;
+  const ControllerOutput& command = controller_output_;
+  last_command_rad_ = command.steering_angle_rad;
+  output.steering_angle_rad = command.steering_angle_rad;
+  output.steering_rate_radps = command.steering_rate_radps;
+  output.steering_acceleration_radps2 = command.steering_acceleration_radps2;
+  output.derivatives_available = command.derivatives_available;
+  output.tracking = command.diagnostics;
+  output.side_slip = slip;
+  output.active_limits =
+      lead_wheel_ ? active_limits(*lead_wheel_, command, std::abs(input.speed_mps)) : limit_none;
+  return Status::ok;
+}
+
+}  // namespace smoothsteer
