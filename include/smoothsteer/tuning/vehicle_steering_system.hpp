@@ -1,0 +1,90 @@
+#pragma once
+//! \file vehicle_steering_system.hpp
+//! A car's SteeringSystem from its description (the vehicle file and the steering actuator's
+//! model) and a path, built once at set-up: the certified gain schedule over speed from the car's
+//! limits and the path's demand (compute_feedforward_schedule, docs/tuning.md), driving the
+//! lead-wheel controller; the slip gradients of the single-track inversion, the friction guard
+//! and the governor's limits from the vehicle file; the Smith predictor's delay from the
+//! actuator; and the side-slip observer on the vehicle's mass, inertia and tires.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/path/path.hpp"
+#include "smoothsteer/system/steering_system.hpp"
+#include "smoothsteer/tuning/vehicle_limits.hpp"
+#include "smoothsteer/validation.hpp"
+#include "smoothsteer/vehicle/steering_actuator.hpp"
+#include "smoothsteer/vehicle/vehicle_parameters.hpp"
+
+namespace smoothsteer {
+
+//! What is known about the car: the vehicle file (wheelbase, steering limits, tires, mass) and
+//! the model of its steering actuator (dead time and low-pass).
+struct VehicleDescription {
+  VehicleParameters vehicle;
+  ActuatorParameters actuator;
+
+  //! The vehicle's first violation (VehicleParameters), else the actuator's: bandwidth_hz
+  //! finite and > 0 (unless ideal), dead_time_s in [0, ControllerParameters::max_actuator_delay_s]
+  //! (the plant sub-step is the simulator's business, ActuatorParameters::first_violation).
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  std::string validation_error() const { return describe(first_violation()); }
+  void validate() const { throw_if_violated(first_violation()); }
+};
+
+//! The template of the lead-wheel controller that make_steering_system() starts from: the
+//! exact rear-axle target with planned curvature jumps, the steering governor, boundary layer
+//! 0.03 (the block of scenarios/lane_change_15.yaml).
+ControllerParameters default_steering_system_controller();
+
+struct SteeringSystemOptions {
+  //! The schedule covers |v| up to this [m/s] (grid speed_step_mps, speed_step_mps, ..., one
+  //! step beyond the first multiple at or above it); above it the last entry holds, uncertified.
+  double max_speed_mps = 20.0;
+  double speed_step_mps = 0.5;  //!< [m/s]
+  //! TuningOptions::feedforward_headroom: kbar_ff over the path's largest curvature, in [1, 3].
+  double feedforward_headroom = 1.2;
+  //! |dv/dt| the schedule covers [m/s^2] (TuningOptions::max_longitudinal_acceleration_mps2).
+  double max_longitudinal_acceleration_mps2 = 0.0;
+  //! Every field the car does not determine (order, cornering target, preview, boundary layer,
+  //! governor.enabled ...). vehicle_wheelbase_m, the slip gradients, the friction guard, the
+  //! governor's limits and actuator_delay_s are set from the description as below.
+  ControllerParameters controller = default_steering_system_controller();
+  //! Single-track inversion with the vehicle's slip gradients K_f, K_r (docs/vehicle_dynamics.md).
+  bool slip_preview = true;
+  //! Friction guard at the tires' mu g (ControllerParameters::max_lateral_acceleration_mps2).
+  bool friction_guard = false;
+  //! The Smith predictor's delay [s]; absent: the actuator's dead time plus the group delay of
+  //! its low-pass at low frequency, 3 / w_p (none for an ideal actuator).
+  std::optional<double> actuator_delay_s;
+  SlipInput slip_input = SlipInput::observer;
+  ObserverTireModel observer_tire_model = ObserverTireModel::magic_formula;
+
+  //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
+  std::optional<Violation> first_violation() const noexcept;
+  bool is_valid() const noexcept { return !first_violation(); }
+  std::string validation_error() const { return describe(first_violation()); }
+  void validate() const { throw_if_violated(first_violation()); }
+};
+
+//! The tuner's view of the car: lf + lr, the steering limits and mu g of its tires.
+VehicleLimits vehicle_limits(const VehicleParameters& vehicle);
+
+//! The Smith predictor's delay of the actuator: dead time + 3 / w_p (0 + dead time if ideal).
+double actuator_group_delay_s(const ActuatorParameters& actuator) noexcept;
+
+//! The controller parameters make_steering_system() gives the schedule as its template.
+ControllerParameters steering_system_controller(const VehicleDescription& car,
+                                                const SteeringSystemOptions& options);
+
+//! Builds the car's steering system on `path`. Throws std::invalid_argument naming the field
+//! (vehicle, actuator, options, a null path) and InfeasibleLimits when the car cannot be
+//! certified on the grid.
+SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_ptr<const Path> path,
+                                    const SteeringSystemOptions& options = {});
+
+}  // namespace smoothsteer

@@ -1,0 +1,135 @@
+#include "smoothsteer/tuning/vehicle_steering_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "smoothsteer/tuning/gain_schedule.hpp"
+#include "smoothsteer/tuning/path_demand.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
+
+namespace smoothsteer {
+
+ControllerParameters default_steering_system_controller() {
+  ControllerParameters p;
+  p.cornering_target = CorneringTarget::rear_axle_exact;
+  p.curvature_preview = CurvaturePreview::planned_jumps;
+  p.boundary_layer = 0.03;
+  p.governor.enabled = true;
+  return p;
+}
+
+std::optional<Violation> VehicleDescription::first_violation() const noexcept {
+  RuleChecker check("VehicleDescription");
+  check.include(vehicle.first_violation());
+  if (!actuator.ideal) {
+    check.require(std::isfinite(actuator.bandwidth_hz) && actuator.bandwidth_hz > 0.0,
+                  "actuator.bandwidth_hz", actuator.bandwidth_hz, "must be finite and > 0");
+  }
+  check.require(actuator.dead_time_s >= 0.0 &&
+                    actuator.dead_time_s <= ControllerParameters::max_actuator_delay_s,
+                "actuator.dead_time_s", actuator.dead_time_s,
+                "must be in [0, ControllerParameters::max_actuator_delay_s =",
+                ControllerParameters::max_actuator_delay_s);
+  return check.first();
+}
+
+std::optional<Violation> SteeringSystemOptions::first_violation() const noexcept {
+  RuleChecker check("SteeringSystemOptions");
+  check.require(std::isfinite(max_speed_mps) && max_speed_mps > 0.0 && max_speed_mps <= 100.0,
+                "max_speed_mps", max_speed_mps, "must be in (0, 100] m/s");
+  check.require(
+      std::isfinite(speed_step_mps) && speed_step_mps >= 0.01 && speed_step_mps <= max_speed_mps,
+      "speed_step_mps", speed_step_mps, "must be in [0.01, max_speed_mps] m/s");
+  check.require(feedforward_headroom >= 1.0 && feedforward_headroom <= 3.0, "feedforward_headroom",
+                feedforward_headroom, "must be in [1, 3]");
+  check.require(
+      max_longitudinal_acceleration_mps2 >= 0.0 && max_longitudinal_acceleration_mps2 <= 50.0,
+      "max_longitudinal_acceleration_mps2", max_longitudinal_acceleration_mps2,
+      "must be in [0, 50] m/s^2");
+  if (actuator_delay_s) {
+    check.require(
+        *actuator_delay_s >= 0.0 && *actuator_delay_s <= ControllerParameters::max_actuator_delay_s,
+        "actuator_delay_s", *actuator_delay_s,
+        "must be in [0, max_actuator_delay_s =", ControllerParameters::max_actuator_delay_s);
+  }
+  const int source = static_cast<int>(slip_input);
+  check.require(source >= 0 && source <= static_cast<int>(SlipInput::observer), "slip_input",
+                source, "must be 0 (kinematic), 1 (sensor) or 2 (observer)");
+  const int tire = static_cast<int>(observer_tire_model);
+  check.require(tire >= 0 && tire <= static_cast<int>(ObserverTireModel::magic_formula),
+                "observer_tire_model", tire, "must be 0 (linear) or 1 (magic_formula)");
+  return check.first();
+}
+
+VehicleLimits vehicle_limits(const VehicleParameters& vehicle) {
+  VehicleLimits limits;
+  limits.wheelbase_m = vehicle.wheelbase_m();
+  limits.max_steering_angle_rad = vehicle.max_steering_angle_rad;
+  limits.max_steering_rate_radps = vehicle.max_steering_rate_radps;
+  limits.max_steering_acceleration_radps2 = vehicle.max_steering_acceleration_radps2;
+  limits.max_lateral_acceleration_mps2 = vehicle.friction_limit_mps2();
+  return limits;
+}
+
+double actuator_group_delay_s(const ActuatorParameters& actuator) noexcept {
+  // Three equal lags 1 / (1 + s / w_p): each delays a slow signal by 1 / w_p.
+  return actuator.dead_time_s + (actuator.ideal ? 0.0 : 3.0 / actuator.pole_radps());
+}
+
+ControllerParameters steering_system_controller(const VehicleDescription& car,
+                                                const SteeringSystemOptions& options) {
+  const VehicleParameters& vehicle = car.vehicle;
+  ControllerParameters p = options.controller;
+  p.vehicle_wheelbase_m = vehicle.wheelbase_m();
+  // As the scenario files' keys slip_preview and friction_guard (docs/scenarios.md).
+  const double most = ControllerParameters::max_slip_gradient_s2pm;
+  p.rear_slip_gradient_s2pm =
+      options.slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0;
+  p.front_slip_gradient_s2pm =
+      options.slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0;
+  p.max_lateral_acceleration_mps2 = options.friction_guard
+                                        ? vehicle.friction_limit_mps2()
+                                        : std::numeric_limits<double>::infinity();
+  if (p.governor.enabled) {
+    if (!std::isfinite(vehicle.max_steering_acceleration_radps2)) {
+      throw std::invalid_argument(
+          "SteeringSystemOptions: controller.governor.enabled needs the vehicle's "
+          "max_steering_acceleration_radps2 (VehicleParameters), which is +inf");
+    }
+    p.governor.max_steering_rate_radps = vehicle.max_steering_rate_radps;
+    p.governor.max_steering_acceleration_radps2 = vehicle.max_steering_acceleration_radps2;
+    p.governor.max_steering_angle_rad = vehicle.max_steering_angle_rad;
+    p.governor.max_lateral_acceleration_mps2 = vehicle.friction_limit_mps2();
+  }
+  p.actuator_delay_s = options.actuator_delay_s.value_or(actuator_group_delay_s(car.actuator));
+  return p;
+}
+
+SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_ptr<const Path> path,
+                                    const SteeringSystemOptions& options) {
+  options.validate();
+  car.validate();
+  if (!path) throw std::invalid_argument("make_steering_system: path is null; a path is required");
+  TuningOptions tuning;
+  tuning.certificate = Certificate::feedforward;
+  tuning.base = steering_system_controller(car, options);
+  tuning.order = tuning.base.order;
+  tuning.feedforward_headroom = options.feedforward_headroom;
+  tuning.max_longitudinal_acceleration_mps2 = options.max_longitudinal_acceleration_mps2;
+  apply_path_demand(tuning, path);
+  const double step = options.speed_step_mps;
+  // One step beyond: parameters_at() blends each interval's upper entry with the next one.
+  const double last = std::ceil(options.max_speed_mps / step - 1e-9) * step + step;
+  GainSchedule schedule = compute_feedforward_schedule(vehicle_limits(car.vehicle), tuning,
+                                                       speed_grid(step, last, step));
+  SteeringSystemParameters system =
+      SteeringSystemParameters::from_vehicle(car.vehicle, options.observer_tire_model);
+  system.slip_input = options.slip_input;
+  return SteeringSystem(std::make_unique<ScheduledController>(std::move(schedule), std::move(path)),
+                        system);
+}
+
+}  // namespace smoothsteer
