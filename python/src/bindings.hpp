@@ -40,6 +40,8 @@ void bind_kinematic_loop(py::module_& m);
 void bind_evaluation(py::module_& m);
 //! load_scenario(), run_scenario(), Scenario.
 void bind_scenario(py::module_& m);
+//! VehicleParameters, ActuatorParameters, SteeringSystem, make_steering_system().
+void bind_system(py::module_& m);
 
 //! A point from any sequence of two numbers (tuple, list, numpy array); TypeError otherwise.
 Vec2 to_vec2(const py::handle& point, const char* argument);

@@ -113,14 +113,36 @@ void bind_controller(py::module_& m) {
       .def_readwrite("feedforward_catch_up", &P::feedforward_catch_up,
                      "share of kbar_sw that makes up the feedforward's rate-limit lag, in [0, 1]")
       .def_readwrite("boundary_layer", &P::boundary_layer, "epsilon >= 0 [rad]")
-      .def_readwrite("actuator_delay_s", &P::actuator_delay_s, "known actuator delay [s]")
+      .def_readwrite("actuator_delay_s", &P::actuator_delay_s,
+                     "Smith predictor's delay [s], in [0, max_actuator_delay_s]; 0 = off")
+      .def_readwrite("preview_time_s", &P::preview_time_s,
+                     "extra feedforward preview [s] times |v|, in [0, max_actuator_delay_s]")
+      .def_readwrite("disturbance_estimation_length_m", &P::disturbance_estimation_length_m,
+                     "low-pass length of the plant-curvature estimate [m]; 0 = off, else "
+                     "[1, 1000]")
+      .def_readwrite("rear_slip_gradient_s2pm", &P::rear_slip_gradient_s2pm,
+                     "K_r of the single-track inversion [s^2/m], in [0, 0.1]")
+      .def_readwrite("front_slip_gradient_s2pm", &P::front_slip_gradient_s2pm,
+                     "K_f of the single-track inversion [s^2/m], in [0, 0.1]")
+      .def_readwrite("slip_preview_second_order", &P::slip_preview_second_order,
+                     "with the inversion's K_f K_r v^4 kappa'' term")
+      .def_readwrite("max_lateral_acceleration_mps2", &P::max_lateral_acceleration_mps2,
+                     "friction guard a_max [m/s^2]; inf = off")
+      .def_readwrite("actuator_time_constant_s", &P::actuator_time_constant_s,
+                     "T of the actuator inversion (1 + T s)^m [s], in [0, 0.5]; 0 = off")
+      .def_readwrite("actuator_lag_count", &P::actuator_lag_count,
+                     "m of the actuator inversion, in [1, 3]")
       .def_readwrite("surface", &P::surface)
       .def_readwrite("cornering_target", &P::cornering_target)
       .def_readwrite("curvature_preview", &P::curvature_preview)
-      .def_readwrite("max_substep_fraction", &P::max_substep_fraction)
-      .def_readwrite("max_substeps", &P::max_substeps)
+      .def_readwrite("max_substep_fraction", &P::max_substep_fraction,
+                     "largest RK4 step of the chain over the shortest wheelbase")
+      .def_readwrite("max_substeps", &P::max_substeps, "sub-steps per period at most")
       .def_readwrite("governor", &P::governor, "SteeringGovernor (docs/governor.md)")
       .def("validate", &P::validate, "Raises ValueError naming the field, value and rule.")
+      .def_readonly_static("max_order", &P::max_order)
+      .def_readonly_static("max_actuator_delay_s", &P::max_actuator_delay_s)
+      .def_readonly_static("max_slip_gradient_s2pm", &P::max_slip_gradient_s2pm)
       .def_static("paper_c1", &P::paper_c1, py::arg("vehicle_wheelbase_m"),
                   py::arg("lead_wheelbase_m"), py::arg("lead_curvature_bound"), py::arg("k_rob"),
                   "The paper's C^1 controller (n = 2), lambda from eq. (cornering_constr).")

@@ -54,6 +54,7 @@ PYBIND11_MODULE(_smoothsteer, m) {
   bind_kinematic_loop(m);
   bind_baselines(m);
   bind_tuning(m);
+  bind_system(m);
   bind_evaluation(m);
   bind_scenario(m);
 }

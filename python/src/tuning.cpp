@@ -109,6 +109,13 @@ void bind_tuning(py::module_& m) {
       .def_readwrite("matched_disturbance_curvature", &T::matched_disturbance_curvature, "[1/m]")
       .def_readwrite("path_curvature_bound", &T::path_curvature_bound, "[1/m]")
       .def_readwrite("path_curvature_rate_bound", &T::path_curvature_rate_bound, "[1/m^2]")
+      .def_readwrite("feedforward_headroom", &T::feedforward_headroom,
+                     "kbar_ff over the path's largest curvature, in [1, 3]")
+      .def_property(
+          "reference_path",
+          [](const T& options) { return std::const_pointer_cast<Path>(options.reference_path); },
+          [](T& options, std::shared_ptr<Path> path) { options.reference_path = std::move(path); },
+          "the path whose lead-wheel curvature rate L_ff covers (None: unknown)")
       .def_readwrite("feedforward_rate_margin", &T::feedforward_rate_margin)
       .def_readwrite("feedforward_rate_share", &T::feedforward_rate_share)
       .def_readwrite("feedforward_ramp_length_m", &T::feedforward_ramp_length_m, "[m]")

@@ -1,0 +1,259 @@
+// The car's steering system (include/smoothsteer/system/, tuning/vehicle_steering_system.hpp):
+// the vehicle description, the side-slip observer's parameters, SteeringSystem and
+// make_steering_system().
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "bindings.hpp"
+#include "smoothsteer/io/vehicle_file.hpp"
+#include "smoothsteer/system/steering_system.hpp"
+#include "smoothsteer/tuning/vehicle_steering_system.hpp"
+
+namespace smoothsteer::python {
+namespace {
+
+template <typename T>
+T from_keywords(const py::kwargs& keywords) {
+  py::object value = py::cast(T{});
+  set_attributes(value, keywords);
+  return value.cast<T>();
+}
+
+//! One control period; a non-ok status raises ControllerError.
+SteeringSystemOutput update(SteeringSystem& system, const py::object& position, double heading_rad,
+                            double speed_mps, double acceleration_mps2, double yaw_rate_radps,
+                            double lateral_acceleration_mps2, double period_s,
+                            std::optional<double> steering_angle_rad,
+                            std::optional<double> rear_axle_side_slip_rad) {
+  SteeringSystemInput input;
+  input.rear_axle_position = to_vec2(position, "rear_axle_position");
+  input.heading_rad = heading_rad;
+  input.speed_mps = speed_mps;
+  input.acceleration_mps2 = acceleration_mps2;
+  input.yaw_rate_radps = yaw_rate_radps;
+  input.lateral_acceleration_mps2 = lateral_acceleration_mps2;
+  input.period_s = period_s;
+  input.steering_angle_rad = steering_angle_rad;
+  input.rear_axle_side_slip_rad = rear_axle_side_slip_rad;
+  SteeringSystemOutput output;
+  const Status status = system.update(input, output);
+  if (status != Status::ok) throw ControllerError(status);
+  return output;
+}
+
+void bind_vehicle(py::module_& m) {
+  py::enum_<ObserverTireModel>(m, "ObserverTireModel")
+      .value("linear", ObserverTireModel::linear, "the linear single-track model")
+      .value("magic_formula", ObserverTireModel::magic_formula,
+             "each axle's Magic Formula (extended Kalman filter)");
+
+  using Tire = TireParameters;
+  py::class_<Tire>(m, "TireParameters", "Lateral Magic Formula of one axle; keyword arguments.")
+      .def(py::init(&from_keywords<Tire>))
+      .def_readwrite("stiffness_factor_b", &Tire::stiffness_factor_b, "B [1/rad]")
+      .def_readwrite("shape_factor_c", &Tire::shape_factor_c, "C")
+      .def_readwrite("friction_mu", &Tire::friction_mu, "D / Fz")
+      .def_readwrite("curvature_factor_e", &Tire::curvature_factor_e, "E");
+
+  using V = VehicleParameters;
+  py::class_<V>(m, "VehicleParameters",
+                "The vehicle file's parameters (single-track models), SI units; keyword "
+                "arguments set any field. The double-track group is read from files only.")
+      .def(py::init(&from_keywords<V>))
+      .def_readwrite("mass_kg", &V::mass_kg)
+      .def_readwrite("yaw_inertia_kgm2", &V::yaw_inertia_kgm2)
+      .def_readwrite("cg_to_front_axle_m", &V::cg_to_front_axle_m, "lf [m]")
+      .def_readwrite("cg_to_rear_axle_m", &V::cg_to_rear_axle_m, "lr [m]")
+      .def_readwrite("cg_height_m", &V::cg_height_m)
+      .def_readwrite("gravity_mps2", &V::gravity_mps2)
+      .def_readwrite("front_tire", &V::front_tire)
+      .def_readwrite("rear_tire", &V::rear_tire)
+      .def_readwrite("max_steering_angle_rad", &V::max_steering_angle_rad)
+      .def_readwrite("max_steering_rate_radps", &V::max_steering_rate_radps)
+      .def_readwrite("max_steering_acceleration_radps2", &V::max_steering_acceleration_radps2,
+                     "inf = none given")
+      .def_readwrite("kinematic_below_mps", &V::kinematic_below_mps)
+      .def_readwrite("kinetic_above_mps", &V::kinetic_above_mps)
+      .def_readwrite("kinematic_relaxation_s", &V::kinematic_relaxation_s)
+      .def_property_readonly("wheelbase_m", &V::wheelbase_m, "lf + lr [m]")
+      .def_property_readonly("friction_limit_mps2", &V::friction_limit_mps2, "min(mu) g")
+      .def_property_readonly("rear_slip_gradient", &V::rear_slip_gradient, "K_r [s^2/m]")
+      .def_property_readonly("front_slip_gradient", &V::front_slip_gradient, "K_f [s^2/m]")
+      .def("validate", &V::validate)
+      .def_static("from_file", &io::load_vehicle_file, py::arg("yaml_path"),
+                  "Reads vehicles/*.yaml (ConfigError naming the file and key).");
+
+  using A = ActuatorParameters;
+  py::class_<A>(m, "ActuatorParameters",
+                "The steering actuator: dead time, then a third-order low-pass; keywords.")
+      .def(py::init(&from_keywords<A>))
+      .def_readwrite("ideal", &A::ideal)
+      .def_readwrite("bandwidth_hz", &A::bandwidth_hz, "f_b [Hz]")
+      .def_readwrite("dead_time_s", &A::dead_time_s, "T_d [s]")
+      .def_readwrite("max_angle_rad", &A::max_angle_rad)
+      .def_readwrite("max_rate_radps", &A::max_rate_radps)
+      .def_property_readonly("pole_radps", &A::pole_radps, "w_p [rad/s]");
+
+  using O = SideSlipObserverParameters;
+  py::class_<O>(m, "SideSlipObserverParameters",
+                "The side-slip observer's model and sensor noise; keyword arguments.")
+      .def(py::init(&from_keywords<O>))
+      .def_readwrite("mass_kg", &O::mass_kg)
+      .def_readwrite("yaw_inertia_kgm2", &O::yaw_inertia_kgm2)
+      .def_readwrite("cg_to_front_axle_m", &O::cg_to_front_axle_m)
+      .def_readwrite("cg_to_rear_axle_m", &O::cg_to_rear_axle_m)
+      .def_readwrite("front_cornering_stiffness_npr", &O::front_cornering_stiffness_npr)
+      .def_readwrite("rear_cornering_stiffness_npr", &O::rear_cornering_stiffness_npr)
+      .def_readwrite("yaw_rate_noise_std_radps", &O::yaw_rate_noise_std_radps)
+      .def_readwrite("lateral_acceleration_noise_std_mps2", &O::lateral_acceleration_noise_std_mps2)
+      .def_readwrite("lateral_process_std_mps2", &O::lateral_process_std_mps2)
+      .def_readwrite("yaw_process_std_radps2", &O::yaw_process_std_radps2)
+      .def_readwrite("tire_model", &O::tire_model)
+      .def_readwrite("front_tire", &O::front_tire)
+      .def_readwrite("rear_tire", &O::rear_tire)
+      .def_readwrite("gravity_mps2", &O::gravity_mps2)
+      .def_readwrite("min_speed_mps", &O::min_speed_mps)
+      .def_static("from_vehicle", &O::from_vehicle, py::arg("vehicle"),
+                  py::arg("cornering_stiffness_scale") = 1.0, py::arg("mass_scale") = 1.0,
+                  py::arg("tire_model") = ObserverTireModel::linear)
+      .def("validate", &O::validate);
+}
+
+void bind_outputs(py::module_& m) {
+  using D = SideSlipDiagnostics;
+  py::class_<D>(m, "SideSlipDiagnostics", "The rear axle's side slip as the system sees it.")
+      .def_readonly("rear_axle_side_slip_rad", &D::rear_axle_side_slip_rad, "beta_r to the law")
+      .def_readonly("side_slip_rad", &D::side_slip_rad, "observer's beta at the CG")
+      .def_readonly("lateral_velocity_mps", &D::lateral_velocity_mps, "observer's vy")
+      .def_readonly("yaw_rate_radps", &D::yaw_rate_radps, "observer's filtered r")
+      .def_readonly("observer_status", &D::observer_status);
+
+  using O = SteeringSystemOutput;
+  py::class_<O>(m, "SteeringSystemOutput", "The command, its derivatives and diagnostics.")
+      .def_readonly("steering_angle_rad", &O::steering_angle_rad)
+      .def_readonly("steering_rate_radps", &O::steering_rate_radps)
+      .def_readonly("steering_acceleration_radps2", &O::steering_acceleration_radps2)
+      .def_readonly("derivatives_available", &O::derivatives_available)
+      .def_readonly("tracking", &O::tracking, "TrackingDiagnostics")
+      .def_readonly("side_slip", &O::side_slip, "SideSlipDiagnostics")
+      .def_readonly("active_limits", &O::active_limits, "ActiveLimit bits")
+      .def_property_readonly(
+          "active_limit_names",
+          [](const O& out) { return describe_active_limits(out.active_limits); },
+          "e.g. 'switching_bound|friction_guard', or 'none'");
+  py::module_ limits = m.def_submodule("ActiveLimit", "The bits of active_limits.");
+  limits.attr("none") = static_cast<int>(limit_none);
+  limits.attr("lead_curvature") = static_cast<int>(limit_lead_curvature);
+  limits.attr("feedforward_bound") = static_cast<int>(limit_feedforward_bound);
+  limits.attr("friction_guard") = static_cast<int>(limit_friction_guard);
+  limits.attr("switching_bound") = static_cast<int>(limit_switching_bound);
+  limits.attr("steering_angle") = static_cast<int>(limit_steering_angle);
+}
+
+}  // namespace
+
+void bind_system(py::module_& m) {
+  bind_vehicle(m);
+  bind_outputs(m);
+  py::enum_<SlipInput>(m, "SlipInput")
+      .value("kinematic", SlipInput::kinematic, "beta_r = 0")
+      .value("sensor", SlipInput::sensor, "rear_axle_side_slip_rad of update()")
+      .value("observer", SlipInput::observer, "SideSlipObserver (default)");
+
+  using P = SteeringSystemParameters;
+  py::class_<P>(m, "SteeringSystemParameters", "Slip input and observer; keyword arguments.")
+      .def(py::init(&from_keywords<P>))
+      .def_readwrite("slip_input", &P::slip_input)
+      .def_readwrite("observer", &P::observer, "SideSlipObserverParameters")
+      .def_static("from_vehicle", &P::from_vehicle, py::arg("vehicle"),
+                  py::arg("tire_model") = ObserverTireModel::linear)
+      .def("validate", &P::validate);
+
+  using C = VehicleDescription;
+  py::class_<C>(m, "VehicleDescription", "The vehicle file and the actuator model; keywords.")
+      .def(py::init(&from_keywords<C>))
+      .def_readwrite("vehicle", &C::vehicle, "VehicleParameters")
+      .def_readwrite("actuator", &C::actuator, "ActuatorParameters")
+      .def("validate", &C::validate);
+
+  using S = SteeringSystemOptions;
+  py::class_<S>(m, "SteeringSystemOptions",
+                "How make_steering_system() builds the car's system (docs/steering_system.md); "
+                "keyword arguments.")
+      .def(py::init(&from_keywords<S>))
+      .def_readwrite("max_speed_mps", &S::max_speed_mps, "the schedule covers |v| up to this")
+      .def_readwrite("speed_step_mps", &S::speed_step_mps)
+      .def_readwrite("feedforward_headroom", &S::feedforward_headroom, "in [1, 3]")
+      .def_readwrite("max_longitudinal_acceleration_mps2", &S::max_longitudinal_acceleration_mps2)
+      .def_readwrite("controller", &S::controller, "template ControllerParameters")
+      .def_readwrite("slip_preview", &S::slip_preview, "single-track inversion (K_f, K_r)")
+      .def_readwrite("friction_guard", &S::friction_guard, "at the tires' mu g")
+      .def_readwrite("actuator_delay_s", &S::actuator_delay_s,
+                     "Smith delay [s]; None = dead time + 3 / w_p")
+      .def_readwrite("slip_input", &S::slip_input)
+      .def_readwrite("observer_tire_model", &S::observer_tire_model)
+      .def("validate", &S::validate);
+
+  py::class_<SteeringSystem>(
+      m, "SteeringSystem",
+      "One real-time object per car: controller, side-slip observer and slip input "
+      "(docs/steering_system.md). In C++ update() is noexcept and allocation free.")
+      .def(py::init([](const VehicleParameters& vehicle, const ControllerParameters& parameters,
+                       std::shared_ptr<Path> path, SlipInput slip_input) {
+             return std::make_unique<SteeringSystem>(vehicle, parameters, std::move(path),
+                                                     slip_input);
+           }),
+           py::arg("vehicle"), py::arg("parameters"), py::arg("path"),
+           py::arg("slip_input") = SlipInput::observer,
+           "The lead-wheel controller on the path with the vehicle's observer.")
+      .def(py::init([](SteeringController& controller, const SteeringSystemParameters& p) {
+             return std::make_unique<SteeringSystem>(controller, p);
+           }),
+           py::arg("controller"), py::arg("parameters"), py::keep_alive<1, 2>(),
+           "Any controller (kept alive by the system) with these slip input and observer.")
+      .def("update", &update, py::arg("rear_axle_position"), py::arg("heading_rad"),
+           py::arg("speed_mps"), py::arg("acceleration_mps2") = 0.0,
+           py::arg("yaw_rate_radps") = 0.0, py::arg("lateral_acceleration_mps2") = 0.0,
+           py::arg("period_s") = 0.02, py::arg("steering_angle_rad") = py::none(),
+           py::arg("rear_axle_side_slip_rad") = py::none(),
+           "One control period with what the car measures: rear axle (x, y) [m], heading "
+           "[rad], signed speed [m/s], dv/dt [m/s^2], yaw rate [rad/s], lateral acceleration "
+           "at the CG [m/s^2], period [s], the measured road-wheel angle [rad] (None: the last "
+           "command) and a slip sensor's beta_r [rad]. Returns a SteeringSystemOutput; raises "
+           "ControllerError on an error status.")
+      .def("reset", &SteeringSystem::reset, py::arg("measured_steering_angle_rad") = 0.0)
+      .def(
+          "set_path",
+          [](SteeringSystem& system, std::shared_ptr<Path> path) {
+            const Status status = system.set_path(std::move(path));
+            if (status != Status::ok) throw ControllerError(status);
+          },
+          py::arg("path"), "Replanning: replaces the path between two update() calls.")
+      .def_property_readonly("parameters", &SteeringSystem::parameters);
+
+  m.def(
+      "make_steering_system",
+      [](const VehicleDescription& car, std::shared_ptr<Path> path,
+         const SteeringSystemOptions& options) {
+        return std::make_unique<SteeringSystem>(
+            make_steering_system(car, std::move(path), options));
+      },
+      py::arg("car"), py::arg("path"), py::arg("options") = SteeringSystemOptions{},
+      "The car's steering system on the path: the certified schedule from the car's limits, "
+      "the vehicle's slip gradients and observer, the actuator's delay. Raises ValueError "
+      "naming the field, InfeasibleLimits when the car cannot be certified.");
+  m.def("steering_system_controller", &steering_system_controller, py::arg("car"),
+        py::arg("options") = SteeringSystemOptions{},
+        "The ControllerParameters make_steering_system() gives its schedule as the template.");
+  m.def("actuator_group_delay_s", &actuator_group_delay_s, py::arg("actuator"),
+        "Dead time + 3 / w_p [s] (the default Smith delay).");
+  m.def("describe_active_limits", &describe_active_limits, py::arg("limits"));
+}
+
+}  // namespace smoothsteer::python
