@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/system/steering_system.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
@@ -58,9 +59,10 @@ const std::vector<SteeringSystemInput>& recorded_inputs() {
     const DynamicSingleTrack model(car().vehicle);
     SimulationParameters parameters;
     parameters.duration_s = 12.0;
-    const SimulationResult result =
-        simulate(*lane_change_path(), model, car().actuator, SpeedProfile::constant(15.0),
-                 parameters, {{-30.0, 0.0}, 0.0}, system);
+    SpeedProfile speed;
+    speed.initial_speed_mps = speed.final_speed_mps = 15.0;
+    const SimulationResult result = simulate(*lane_change_path(), model, car().actuator, speed,
+                                             parameters, {{-30.0, 0.0}, 0.0}, system);
     std::vector<SteeringSystemInput> recorded;
     for (const TraceSample& sample : result.trace) {
       VehicleState state;
@@ -142,5 +144,32 @@ void BM_BareControllerUpdate(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_BareControllerUpdate);
+
+}  // namespace
+
+namespace {
+
+//! The library's default lead-wheel controller (fixed parameters, lambda_l = 1 m: three chain
+//! sub-steps per period at 15 m/s instead of the schedule's nine), with and without the
+//! Magic-Formula observer: what the composition costs over a cheaper controller.
+SteeringSystem default_controller_system(SlipInput slip) {
+  SteeringSystemParameters parameters =
+      SteeringSystemParameters::from_vehicle(car().vehicle, ObserverTireModel::magic_formula);
+  parameters.slip_input = slip;
+  ControllerParameters controller;
+  controller.vehicle_wheelbase_m = car().vehicle.wheelbase_m();
+  return SteeringSystem(std::make_unique<LeadWheelController>(controller, lane_change_path()),
+                        parameters);
+}
+
+void BM_DefaultControllerSystemUpdateMagicFormulaObserver(benchmark::State& state) {
+  run_system(state, default_controller_system(SlipInput::observer));
+}
+BENCHMARK(BM_DefaultControllerSystemUpdateMagicFormulaObserver);
+
+void BM_DefaultControllerSystemUpdateSlipSensor(benchmark::State& state) {
+  run_system(state, default_controller_system(SlipInput::sensor));
+}
+BENCHMARK(BM_DefaultControllerSystemUpdateSlipSensor);
 
 }  // namespace
