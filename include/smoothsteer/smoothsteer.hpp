@@ -19,6 +19,7 @@
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/sim/speed_profile.hpp"
 #include "smoothsteer/status.hpp"
+#include "smoothsteer/system/steering_system.hpp"
 #include "smoothsteer/vehicle/double_track.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
 #include "smoothsteer/vehicle/steering_actuator.hpp"

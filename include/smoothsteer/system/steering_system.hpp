@@ -11,10 +11,18 @@
 //! this same object (sim/simulation.hpp), so a car and the simulation share one wiring.
 //!
 //! \code
+//!   // set-up (tuning/vehicle_steering_system.hpp): the car's description and the path
 //!   smoothsteer::SteeringSystem system = smoothsteer::make_steering_system(car, path);
+//!   // every period
+//!   smoothsteer::SteeringSystemInput in;
+//!   in.rear_axle_position = {x, y};
+//!   in.heading_rad = psi;
+//!   in.speed_mps = v;
+//!   in.yaw_rate_radps = r;
+//!   in.lateral_acceleration_mps2 = ay;
+//!   in.steering_angle_rad = delta_measured;  // optional
 //!   smoothsteer::SteeringSystemOutput out;
-//!   system.update({.rear_axle_position = {x, y}, .heading_rad = psi, .speed_mps = v,
-//!                  .yaw_rate_radps = r, .lateral_acceleration_mps2 = ay, .period_s = 0.02}, out);
+//!   if (system.update(in, out) == smoothsteer::Status::ok)
 //!   actuator.command(out.steering_angle_rad);
 //! \endcode
 //! update() is noexcept, allocation free and deterministic; set_path() has the controller's
