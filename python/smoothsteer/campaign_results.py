@@ -106,6 +106,7 @@ def read_rows(out, spec):
     import pandas as pd
 
     frame = pd.read_csv(os.path.join(out, RESULTS), keep_default_na=False, na_values=[""],
+                        float_precision="round_trip",
                         dtype={"error_kind": str, "error": str, "status": str,
                                "overrides": str, "stop_reason": str, "sim_status": str})
     frame = frame[frame["case"] < spec.cases]

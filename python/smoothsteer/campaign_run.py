@@ -5,8 +5,10 @@ results.csv as it finishes.
 A batch whose worker dies is lost as a whole (its rows come back only at its end). Its cases are
 sent again one per task; a case whose task is lost twice is written as failed (error_kind
 `worker_died`) with the last error, so no case is dropped. The LocalCluster's scheduler has
-`allowed-failures` 0, so that every loss is counted here; an external scheduler retries a task
-itself first (its own `distributed.scheduler.allowed-failures`, 3 by default)."""
+`allowed-failures` 0, so that every loss is counted here, and `worker-saturation` 1, so that a
+worker holds only the task it runs and its death costs no queued task a loss. An external
+scheduler retries a task itself first (its `distributed.scheduler.allowed-failures`, 3 by
+default) and may queue tasks on a worker."""
 import collections
 import logging
 import os
@@ -73,7 +75,8 @@ def local_client(workers):
     import dask
     from distributed import Client, LocalCluster
 
-    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0,
+                          "distributed.scheduler.worker-saturation": 1.0}):
         cluster = LocalCluster(n_workers=workers or os.cpu_count(), threads_per_worker=1,
                                processes=True, dashboard_address=None,
                                silence_logs=logging.CRITICAL)
