@@ -10,14 +10,9 @@ import numpy as np
 from . import _override_text
 from . import campaign_figures
 from .campaign_results import read_rows
+from .campaign_spec import display_path
 
 PERCENTILES = (50, 90, 99, 99.9)
-
-
-def display_path(path):
-    """A path relative to the working directory when it lies below it (the repository root)."""
-    relative = os.path.relpath(path)
-    return path if relative.startswith("..") else relative
 
 
 def replay_command(spec, row):

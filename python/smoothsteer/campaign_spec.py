@@ -28,6 +28,12 @@ DEFAULT_METRICS = ("max_abs_rear_error_m", "rms_rear_error_m", "final_abs_rear_e
                    "held_acceleration_max_radps2", "held_above_limits", "max_abs_side_slip_rad")
 
 
+def display_path(path):
+    """A path relative to the working directory when it lies below it (the repository root)."""
+    relative = os.path.relpath(path)
+    return path if relative.startswith("..") else relative
+
+
 class Criterion:
     """metric <= max and/or metric >= min."""
 
@@ -119,7 +125,7 @@ class CampaignSpec:
         """The scenario loader's own rules on the fixed overrides and each variable's range."""
         def load(node, overrides, note=""):
             try:
-                load_scenario(self.base, overrides)
+                load_scenario(display_path(self.base), overrides)
             except ConfigError as error:
                 node.fail(f"the scenario rejects it{note}: {error}")
 

@@ -35,8 +35,9 @@ def serial_rows(spec, out):
 
 def test_a_cluster_of_two_workers_gives_the_serial_rows(tmp_path, client):
     spec = write_spec(tmp_path, cases=24)
-    run = campaign.run_campaign(spec, tmp_path / "cluster", client=client, batch_size=3,
-                                progress=False)
+    # By the scheduler's address, as --scheduler tcp://host:8786 connects to a real cluster.
+    run = campaign.run_campaign(spec, tmp_path / "cluster", scheduler=client.scheduler.address,
+                                batch_size=3, progress=False)
     assert (run.ran, run.failed, run.lost_tasks, run.workers) == (24, 0, 0, 2)
     cluster = rows(tmp_path / "cluster")
     serial = serial_rows(spec, tmp_path / "serial")
