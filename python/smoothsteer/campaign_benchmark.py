@@ -4,15 +4,20 @@ campaign in this process and on a LocalCluster of 1 and 2 workers (docs/benchmar
     PYTHONPATH=build/ci/python /usr/bin/python3 -m smoothsteer.campaign_benchmark \
         docs/campaigns/lane_change.yaml --cases 400
 
-Every configuration runs the same cases 0 .. N-1 of the spec into a fresh directory. The
-cluster's start is timed apart from its run. The per-case overhead of the cluster is the
-difference of the 1-worker campaign and the plain loop, per case: both use one core for the
-cases, so it is what the scheduling, the transfer of batches and rows, and the CSV cost."""
+Every configuration runs the same cases 0 .. N-1 of the spec into a fresh directory, and the
+configurations take turns for --rounds rounds (the machine's load drifts; the median is
+reported). The cluster's start is timed apart from its run. The per-case overhead of the
+cluster is the difference of the 1-worker campaign and the plain loop, per case: both use one
+core for the cases, so it is what the scheduling, the transfer of batches and rows, and the CSV
+cost. "run in the worker" is the mean of results.csv's elapsed_s: run_scenario() alone, as the
+worker measured it."""
 import argparse
 import os
 import sys
 import tempfile
 import time
+
+import numpy as np
 
 from . import run_scenario
 from .campaign_run import local_client, run_cases
@@ -27,11 +32,18 @@ def plain_loop(spec, cases):
     return time.perf_counter() - started
 
 
+def _mean_elapsed(out, spec):
+    from .campaign_results import read_rows
+
+    return float(read_rows(out, spec)["elapsed_s"].mean())
+
+
 def campaign_time(spec, directory, workers, batch_size):
-    out = os.path.join(directory, f"workers_{workers}")
+    """(wall time of the cases, cluster start, mean run time in the worker)."""
+    out = os.path.join(directory, f"workers_{workers}_{time.time_ns()}")
     if workers == 0:
         run = run_cases(spec, out, serial=True, batch_size=batch_size, progress=False)
-        return run.elapsed_s, 0.0
+        return run.elapsed_s, 0.0, _mean_elapsed(out, spec)
     started = time.perf_counter()
     client, cluster = local_client(workers)
     start_s = time.perf_counter() - started
@@ -41,7 +53,7 @@ def campaign_time(spec, directory, workers, batch_size):
         client.close()
         cluster.close()
     assert run.ran == spec.cases and run.failed == 0, run
-    return run.elapsed_s, start_s
+    return run.elapsed_s, start_s, _mean_elapsed(out, spec)
 
 
 def main(argv=None):
@@ -50,25 +62,33 @@ def main(argv=None):
     parser.add_argument("--cases", type=int, default=400)
     parser.add_argument("--batch-size", type=int, default=None,
                         help="cases per task (default: the campaign's own choice)")
+    parser.add_argument("--rounds", type=int, default=3)
     arguments = parser.parse_args(argv)
     spec = load_spec(arguments.spec)
     spec.cases = arguments.cases
-    rows = [("plain loop over run_scenario, one process", plain_loop(spec, spec.cases), 0.0)]
+    labels = ["plain loop over run_scenario, one process", "campaign in this process (--serial)",
+              "campaign, LocalCluster of 1 worker", "campaign, LocalCluster of 2 workers"]
+    measured = {label: [] for label in labels}
     with tempfile.TemporaryDirectory() as directory:
-        for workers, label in ((0, "campaign in this process (--serial)"),
-                               (1, "campaign, LocalCluster of 1 worker"),
-                               (2, "campaign, LocalCluster of 2 workers")):
-            elapsed, start_s = campaign_time(spec, directory, workers, arguments.batch_size)
-            rows.append((label, elapsed, start_s))
-    plain = rows[0][1] / spec.cases
-    print(f"{spec.name}: {spec.cases} cases, {os.cpu_count()} cores")
-    print("| configuration | cases/s | ms per case | cluster start [s] |")
-    print("|---|---|---|---|")
-    for label, elapsed, start_s in rows:
-        start = f"{start_s:.1f}" if start_s else ""
+        for _ in range(arguments.rounds):
+            measured[labels[0]].append((plain_loop(spec, spec.cases), 0.0, float("nan")))
+            for workers, label in enumerate(labels[1:]):
+                measured[label].append(campaign_time(spec, directory, workers,
+                                                     arguments.batch_size))
+    median = {label: [float(np.median([m[i] for m in values])) for i in range(3)]
+              for label, values in measured.items()}
+    print(f"{spec.name}: {spec.cases} cases, {os.cpu_count()} cores, median of "
+          f"{arguments.rounds} rounds, load average {os.getloadavg()[0]:.1f} at the end")
+    print("| configuration | cases/s | wall ms per case | run in the worker, ms | "
+          "cluster start [s] |")
+    print("|---|---|---|---|---|")
+    for label in labels:
+        elapsed, start_s, in_worker = median[label]
         print(f"| {label} | {spec.cases / elapsed:.1f} | {1e3 * elapsed / spec.cases:.2f} | "
-              f"{start} |")
-    overhead = rows[2][1] / spec.cases - plain
+              f"{'' if np.isnan(in_worker) else f'{1e3 * in_worker:.2f}'} | "
+              f"{f'{start_s:.1f}' if start_s else ''} |")
+    plain = median[labels[0]][0] / spec.cases
+    overhead = median[labels[2]][0] / spec.cases - plain
     print(f"per-case overhead of the cluster (1 worker - plain loop): {1e3 * overhead:.2f} ms "
           f"({100.0 * overhead / plain:.1f} % of a case)")
     return 0

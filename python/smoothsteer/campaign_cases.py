@@ -50,9 +50,9 @@ def _one_line(error):
     return text[:MAX_ERROR_CHARS]
 
 
-def failed_row(spec, case, attempts, kind, error):
+def failed_row(spec, case, attempts, kind, error, overrides=None):
     """The row of a case that did not run, with every sampled value it was given."""
-    overrides = spec.case_overrides(case)
+    overrides = spec.case_overrides(case) if overrides is None else overrides
     row = {"case": case, "seed": spec.seed, "status": "failed", "passed": 0,
            "attempts": attempts, "error_kind": kind, "error": error,
            "overrides": json.dumps(overrides, sort_keys=False), "elapsed_s": 0.0}
@@ -64,20 +64,22 @@ def failed_row(spec, case, attempts, kind, error):
 def run_case(spec, case):
     """Runs one case, once more if it raises; returns its row."""
     errors = []
+    overrides = spec.case_overrides(case)
     for attempt in (1, 2):
         started = time.perf_counter()
         try:
-            _, summary = run_scenario(spec.base, spec.case_overrides(case))
+            _, summary = run_scenario(spec.base, overrides)
         except Exception as error:  # noqa: BLE001 - every error becomes the case's row
             errors.append(error)
             continue
         elapsed = time.perf_counter() - started
-        return completed_row(spec, case, attempt, summary, elapsed)
-    return failed_row(spec, case, 2, type(errors[-1]).__name__, _one_line(errors[-1]))
+        return completed_row(spec, case, attempt, summary, elapsed, overrides)
+    return failed_row(spec, case, 2, type(errors[-1]).__name__, _one_line(errors[-1]),
+                      overrides)
 
 
-def completed_row(spec, case, attempts, summary, elapsed):
-    row = failed_row(spec, case, attempts, "", "")
+def completed_row(spec, case, attempts, summary, elapsed, overrides):
+    row = failed_row(spec, case, attempts, "", "", overrides)
     metrics = summary["metrics"]
     for name in spec.metrics:
         row[name] = _metric(metrics, name)

@@ -102,7 +102,7 @@ class Variable:
         self.step = None
 
     def _round(self, value):
-        # 12 significant digits drop the binary noise of k * step (0.001 * 37 = 0.037000000000000005)
+        # 12 significant digits drop the binary noise of k * step (9 * 0.001 = 0.009000000000000001)
         return float(f"{round(value / self.step) * self.step:.12g}")
 
     def sample(self, seed, case):

@@ -50,8 +50,9 @@ def _header(spec, frame, ran):
               f"{len(frame)} of {spec.cases} cases in the results"
               + ("" if len(frame) == spec.cases else
                  f" (**{spec.cases - len(frame)} not run yet**)"),
-              f"- passed: **{passed} of {len(frame)} ({100.0 * passed / max(len(frame), 1):.2f} %)**;"
-              f" ran: {len(ran)}; failed to run: {len(frame) - len(ran)}",
+              f"- passed: **{passed} of {len(frame)} "
+              f"({100.0 * passed / max(len(frame), 1):.2f} %)**; ran: {len(ran)}; "
+              f"failed to run: {len(frame) - len(ran)}",
               f"- simulation time per case (worker): mean {ran['elapsed_s'].mean() * 1e3:.1f} ms,"
               f" max {ran['elapsed_s'].max() * 1e3:.1f} ms" if len(ran) else "- no case ran"]
     if spec.overrides:

@@ -64,7 +64,8 @@ class _Progress:
             self.bar.set_postfix(failed=failed, refresh=False)
 
     def note(self, text):
-        self.bar.write(text) if not self.bar.disable else None
+        if not self.bar.disable:
+            self.bar.write(text)
 
     def close(self):
         self.bar.close()
@@ -121,6 +122,10 @@ class _Runner:
         fill()
         for future in completed:
             batch = in_flight.pop(future.key)
+            if future.status == "cancelled":  # the scheduler is gone, not the case's fault
+                raise RuntimeError(f"{self.spec.name}: the scheduler cancelled the tasks (lost "
+                                   "connection?); the finished rows are kept, run the command "
+                                   "again to resume")
             try:
                 rows = future.result()
             except Exception as error:  # noqa: BLE001 - a lost task; its cases run again
@@ -134,7 +139,7 @@ class _Runner:
         self.lost += 1
         kind = "worker_died" if type(error).__name__ == "KilledWorker" else type(error).__name__
         text = " ".join(f"{type(error).__name__}: {error}".split())[:400]
-        self.progress.note(f"lost cases {batch[0]}..{batch[-1]} ({kind}); sending them again")
+        self.progress.note(f"lost cases {batch[0]}..{batch[-1]} ({kind})")
         for case in batch:
             self.losses[case] += 1
         retry = []
