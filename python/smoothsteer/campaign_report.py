@@ -13,6 +13,8 @@ from .campaign_results import read_rows
 from .campaign_spec import display_path
 
 PERCENTILES = (50, 90, 99, 99.9)
+# Metrics whose smallest value is the worst when no criterion says otherwise.
+LARGER_IS_BETTER = ("reached",)
 
 
 def replay_command(spec, row):
@@ -36,9 +38,11 @@ def _sampled(spec, row):
 
 
 def _worst_direction(spec, metric):
-    """Largest first, unless the only criterion on the metric is a minimum."""
+    """True: smallest first (the metric's only criteria are minima, or it is 'reached')."""
     bounds = [c for c in spec.criteria if c.metric == metric]
-    return bool(bounds) and all(c.max is None for c in bounds)
+    if not bounds:
+        return metric in LARGER_IS_BETTER
+    return all(c.max is None for c in bounds)
 
 
 def _header(spec, frame, ran):
@@ -117,7 +121,18 @@ def _worst(spec, ran):
                       f"({_sampled(spec, row)})", "", "   ```", f"   {replay_command(spec, row)}",
                       "   ```"]
         lines.append("")
-    return lines
+    others = [m for m in spec.metrics if m not in metrics]
+    if others:
+        lines += ["### The worst case of every other metric", ""]
+    for metric in others:
+        values = ran[metric].astype(float)
+        if values.nunique() <= 1:
+            lines.append(f"- `{metric}`: {_format(values.iloc[0])} in every case that ran")
+            continue
+        row = ran.loc[values.idxmin() if _worst_direction(spec, metric) else values.idxmax()]
+        lines += [f"- `{metric}` = {_format(row[metric])}, case {int(row['case'])}: "
+                  f"`{replay_command(spec, row)}`"]
+    return lines + [""]
 
 
 def _failures(spec, frame, ran):
