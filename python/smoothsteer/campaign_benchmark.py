@@ -56,6 +56,28 @@ def campaign_time(spec, directory, workers, batch_size):
     return run.elapsed_s, start_s, _mean_elapsed(out, spec)
 
 
+def _nothing(spec, cases):
+    return []
+
+
+def task_overhead(spec, tasks=400):
+    """Wall time per task of an empty batch on a LocalCluster of 1 worker, sent as the
+    campaign sends its batches (the spec travels with each)."""
+    from distributed import as_completed
+
+    client, cluster = local_client(1)
+    try:
+        client.submit(_nothing, spec, [], pure=False).result()  # the worker imports smoothsteer
+        started = time.perf_counter()
+        for future in as_completed([client.submit(_nothing, spec, [case], pure=False)
+                                    for case in range(tasks)]):
+            future.result()
+        return (time.perf_counter() - started) / tasks
+    finally:
+        client.close()
+        cluster.close()
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("spec")
@@ -91,6 +113,7 @@ def main(argv=None):
     overhead = median[labels[2]][0] / spec.cases - plain
     print(f"per-case overhead of the cluster (1 worker - plain loop): {1e3 * overhead:.2f} ms "
           f"({100.0 * overhead / plain:.1f} % of a case)")
+    print(f"one empty task on a LocalCluster of 1 worker: {1e3 * task_overhead(spec):.2f} ms")
     return 0
 
 
