@@ -167,4 +167,6 @@ class Variable:
                 bounds = f", truncated to [{self.low if self.low is not None else '-inf'}, " \
                          f"{self.high if self.high is not None else 'inf'}]"
             return f"normal, mean {self.mean:g}, std {self.std:g}{bounds}{step}"
+        if self.kind == "integer":
+            return f"integer in [{self.low}, {self.high}]"
         return f"{self.kind.replace('_', '-')} in [{self.low:g}, {self.high:g}]{step}"
