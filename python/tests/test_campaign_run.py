@@ -47,13 +47,19 @@ def test_a_cluster_of_two_workers_gives_the_serial_rows(tmp_path, client):
 
 
 def kill_one_worker_when(client, out, lines):
-    pids = list(client.run(os.getpid).values())
+    """SIGKILLs a worker that is running a task once results.csv has `lines` rows."""
+    pids = client.run(os.getpid)
 
     def kill():
         deadline = time.monotonic() + 60.0
         while data_lines(out) < lines and time.monotonic() < deadline:
             time.sleep(0.01)
-        os.kill(pids[0], signal.SIGKILL)
+        while time.monotonic() < deadline:
+            busy = [address for address, keys in client.processing().items() if keys]
+            if busy:
+                os.kill(pids[busy[0]], signal.SIGKILL)
+                return
+            time.sleep(0.005)
 
     thread = threading.Thread(target=kill)
     thread.start()
