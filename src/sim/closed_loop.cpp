@@ -106,7 +106,8 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                                    parameters.integrator_tolerance,
                                    &result.model_evaluations,
                                    &result.plant_fallback_periods,
-                                   input_buffer.data()};
+                                   input_buffer.data(),
+                                   parameters.steering_offset_rad};
 
   std::mt19937_64 engine(parameters.noise_seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);

@@ -62,6 +62,9 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
     return bad("plant_curvature_disturbance", plant_curvature_disturbance,
                "must be in [-1, 1] 1/m");
   }
+  if (!std::isfinite(steering_offset_rad) || std::abs(steering_offset_rad) > 0.1) {
+    return bad("steering_offset_rad", steering_offset_rad, "must be in [-0.1, 0.1] rad");
+  }
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
     return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
   }

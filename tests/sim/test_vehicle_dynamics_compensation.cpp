@@ -10,6 +10,7 @@
 
 #include "sim_test_support.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path_builder.hpp"
 #include "smoothsteer/sim/simulation.hpp"
@@ -285,7 +286,7 @@ namespace {
 // feedforward absorbs it: the steady rear-axle offset shrinks by at least a quarter (typically
 // 30-60 %). It does not vanish (docs/feedforward.md, "disturbances on the vehicle", says why this
 // is still open).
-TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndShrinksTheOffset) {
+TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndRemovesTheOffset) {
   const VehicleParameters car;
   const int cases = testing::property_cases(20);
   for (int c = 0; c < cases; ++c) {
@@ -296,7 +297,15 @@ TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndShrinksTheOffset) {
     auto path = std::make_shared<const Path>(
         circle ? PathBuilder({0, 0}, 0.0).line(5.0).arc(radius, 1.5 * pi).build()
                : PathBuilder({0, 0}, 0.0).line(400.0).build());
+    // n = 2 (the paper's C^1 controller) or n = 3 (its chain with one more lag, lambda_1 from
+    // eq. cornering_constr), where the defaults left 32 and 53 cm at 0.9 k_rob kbar.
     ControllerParameters p = ControllerParameters::paper_c1(car.wheelbase_m(), 1.0, 0.1, 0.3);
+    if (random.coin()) {
+      p.order = 3;
+      p.wheelbases_m[1] = 0.8;
+      p.wheelbases_m[2] = 0.6;
+      p.wheelbases_m[0] = cornering_front_wheelbase(car.wheelbase_m(), 0.8 * 0.8 + 0.6 * 0.6);
+    }
     p.feedforward_share = 0.6;
     p.feedforward_curvature_rate = 0.01;
     p.cornering_target = CorneringTarget::rear_axle;
@@ -325,12 +334,17 @@ TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndShrinksTheOffset) {
     };
     const Outcome without = run_with(0.0);
     const Outcome with = run_with(5.0);
-    const std::string inputs = "kappa_d " + std::to_string(disturbance) +
-                               (circle ? " circle R " : " line ") + std::to_string(radius) + " v " +
-                               std::to_string(speed) + "; " + testing::seed_message(seed);
+    const std::string inputs = "kappa_d " + std::to_string(disturbance) + " n " +
+                               std::to_string(p.order) + (circle ? " circle R " : " line ") +
+                               std::to_string(radius) + " v " + std::to_string(speed) + "; " +
+                               testing::seed_message(seed);
     EXPECT_NEAR(with.estimate, disturbance, 0.03 * std::abs(disturbance)) << inputs;
-    EXPECT_LT(with.offset, 0.75 * without.offset)
+    // The target's heading carries the chain's steady cross-track angle kappa_d l
+    // (lead_wheel_controller.cpp, target_curve): the offset goes, not only a part of it
+    // (at most 3.2 % and 4.9 mm over 300 seeds).
+    EXPECT_LT(with.offset, 0.05 * without.offset)
         << "with " << with.offset << " without " << without.offset << "; " << inputs;
+    EXPECT_LT(with.offset, 0.008) << "without " << without.offset << "; " << inputs;
   }
 }
 
