@@ -49,10 +49,34 @@ void write_trace(const std::string& file, const std::vector<TraceSample>& trace)
   if (!out) throw std::runtime_error("road suite: writing " + file + " failed");
 }
 
+//! The certified route is the car's own: a road's `schedule: .../passenger_car_<X>.csv` becomes
+//! `.../<car>_<X>.csv` (the same `smoothsteer tune` command with the car's file), which must exist.
+std::vector<std::string> car_schedule(const Case& c, const std::string& car) {
+  const io::Scenario road = io::load_scenario(c.road_file);
+  const YAML::Node schedule = road.controller["schedule"];
+  if (!schedule || !schedule.IsScalar()) return {};
+  const std::filesystem::path given(schedule.Scalar());
+  const std::string name = given.filename().string();
+  const std::string prefix = "passenger_car_";
+  if (name.rfind(prefix, 0) != 0) return {};
+  const std::filesystem::path own = given.parent_path() / (car + "_" + name.substr(prefix.size()));
+  const std::filesystem::path resolved =
+      own.is_relative() ? std::filesystem::path(c.road_file).parent_path() / own : own;
+  if (!std::filesystem::is_regular_file(resolved)) {
+    throw std::invalid_argument(c.road_file + ": the certified route of " + car + " needs " +
+                                resolved.string() + " (smoothsteer tune with vehicles/" + car +
+                                ".yaml, as the road's schedule was made)");
+  }
+  return {"controller.schedule=" + own.string()};
+}
+
 Outcome run_case(const Case& c, const std::string& trace_directory) {
   const std::string vehicle = std::filesystem::absolute(c.vehicle_file).string();
-  const io::Scenario scenario =
-      io::load_scenario(c.road_file, {"vehicle.file=" + vehicle, "model=" + c.model});
+  std::vector<std::string> overrides{"vehicle.file=" + vehicle, "model=" + c.model};
+  if (c.controller == certified) {
+    for (std::string& o : car_schedule(c, stem(c.vehicle_file))) overrides.push_back(o);
+  }
+  const io::Scenario scenario = io::load_scenario(c.road_file, overrides);
   io::RunResult run;
   if (c.controller == certified) {
     run = io::run_scenario(scenario);
@@ -74,7 +98,7 @@ Outcome run_case(const Case& c, const std::string& trace_directory) {
             m.held_acceleration_violations;
   for (const TraceSample& r : run.simulation.trace) {
     o.max_heading = std::max(o.max_heading, std::abs(r.heading_error_rad));
-    o.max_slip = std::max(o.max_slip, std::abs(r.side_slip_rad));
+    o.max_slip = std::max(o.max_slip, std::abs(r.rear_side_slip_rad));
   }
   o.wide = !(o.max_e <= road_suite_wide_error_m);
   o.spun = o.max_heading > road_suite_spin_heading_error_rad ||
@@ -196,9 +220,12 @@ RoadSuiteResult run_road_suite_comparison(const RoadSuiteOptions& options) {
       "max_abs_e_m, rms_e_m: the rear axle's lateral error over the whole run (on a path with "
       "gear changes, against the active piece). held_above_limits: held-command samples above "
       "the car's angle, rate or acceleration limit. wide: max |e| > 1 m; spun: |heading error| "
-      "> 1 rad or |side slip| > 0.5 rad. stop: path_end (the run reached the end of its path) or "
+      "> 1 rad or |rear-axle side slip| > 0.5 rad (the rear axle slides; at parking speed the CG's "
+      "kinematic slip atan(lr tan(delta) / L) reaches 0.6 rad without any sliding). stop: path_end "
+      "(the run reached the end of its path) or "
       "duration. certified: the road file's own controller (the scheduled lead-wheel controller "
-      "with the governor); every other row is a baseline behind the second-order limiter "
+      "with the governor and the schedule `smoothsteer tune` gives for that car, "
+      "schedules/<car>_*.csv); every other row is a baseline behind the second-order limiter "
       "(docs/baselines.md). Cars: vehicles/*.yaml (CommonRoad vehicles 1-3); plants: the "
       "single-track model (model: dynamic) and the held-out double-track model."};
 

@@ -3,10 +3,12 @@
 //! Every controller on the road suite (scenarios/roads/, the hairpin), with each of the three
 //! published cars (vehicles/) and on each plant (the single-track model and the held-out
 //! double-track model): rear-axle max and RMS |e|, held command samples above the car's limits,
-//! runs wide (max |e| > 1 m) or spun (|heading error| > 1 rad or |side slip| > 0.5 rad). The
-//! scenario's own controller is the certified route; every baseline runs behind the second-order
-//! limiter of `compare` (the scenario actuator's angle and rate limits and the car's
-//! acceleration limit), so every row holds the same limits. docs/results/road_suite.md.
+//! runs wide (max |e| > 1 m) or spun (|heading error| > 1 rad or |rear-axle side slip| >
+//! 0.5 rad). The scenario's own controller is the certified route, with the schedule tuned for
+//! the car (a road's schedules/passenger_car_X.csv becomes schedules/<car>_X.csv); every baseline
+//! runs behind the second-order limiter of `compare` (the scenario actuator's angle and rate limits
+//! and the car's acceleration limit), so every row holds the same limits.
+//! docs/results/road_suite.md.
 
 #include <string>
 #include <vector>
