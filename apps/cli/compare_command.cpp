@@ -218,9 +218,10 @@ void add_compare_command(CLI::App& app) {
     for (const char* speed : {"10", "15", "19"}) {
       files.push_back(options->scenario_directory + "/lane_change_" + speed + ".yaml");
     }
-    emit(
-        run_lane_change_comparison(files, paper_figures(*options), plant_overrides(options->plant)),
-        *options, options->plant.empty() ? "lane_change" : "lane_change_" + options->plant);
+    ResultsTable table =
+        run_lane_change_comparison(files, paper_figures(*options), plant_overrides(options->plant));
+    if (!options->plant.empty()) table.title += " (plant: model " + options->plant + ")";
+    emit(table, *options, options->plant.empty() ? "lane_change" : "lane_change_" + options->plant);
   });
   CLI::App* parameters =
       compare->add_subcommand("parameters", "circle_sections with the settings of Sec. IV-A");
@@ -247,7 +248,9 @@ void add_compare_command(CLI::App& app) {
                         load_scenarios(*options, options->held_out, options->plant), rule);
     const std::string stem =
         options->plant.empty() ? "tuning_rule" : "tuning_rule_" + options->plant;
-    emit(result.table(), *options, stem);
+    ResultsTable table = result.table();
+    if (!options->plant.empty()) table.title += " (held-out plant: model " + options->plant + ")";
+    emit(table, *options, stem);
     emit(result.timings_table(), *options, stem + "_timings");
   });
   add_engagement_command(*compare, options);
