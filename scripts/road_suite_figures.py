@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """One figure per road of the road suite (docs/results/road_suite.md): for each of the three cars
-on the held-out double-track plant, the path with the rear axle's track, the rear-axle lateral
+on the held-out double-track plant, the path (grey) with the rear axle's track, the rear-axle lateral
 error and the steering command over the distance travelled, for the certified route and four
 baselines. Reads the traces of `smoothsteer compare road-suite --traces DIR`:
 
@@ -35,7 +35,9 @@ def columns(path):
 def road_figure(directory, road, output):
     figure, axes = plt.subplots(len(CARS), 3, figsize=(12, 2.6 * len(CARS)),
                                 gridspec_kw={"width_ratios": [1.2, 1, 1]})
+    path = columns(os.path.join(directory, road, "path.csv"))
     for row, car in zip(axes, CARS):
+        row[0].plot(path["x"], path["y"], color="0.6", lw=3.0, alpha=0.5, label="path")
         for controller, colour, width in CONTROLLERS:
             file = os.path.join(directory, road, "%s_%s_%s.csv" % (car, PLANT, controller))
             if not os.path.exists(file):
@@ -63,7 +65,8 @@ def road_figure(directory, road, output):
 def main():
     directory, output = sys.argv[1], sys.argv[2]
     os.makedirs(output, exist_ok=True)
-    for road in sorted(os.listdir(directory)):
+    for road in sorted(d for d in os.listdir(directory)
+                       if os.path.isdir(os.path.join(directory, d))):
         road_figure(directory, road, os.path.join(output, road + ".png"))
         print("wrote", os.path.join(output, road + ".png"))
 

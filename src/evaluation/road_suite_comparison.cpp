@@ -70,7 +70,32 @@ std::vector<std::string> car_schedule(const Case& c, const std::string& car) {
   return {"controller.schedule=" + own.string()};
 }
 
-Outcome run_case(const Case& c, const std::string& trace_directory) {
+//! The road's path (every piece of a plan) as x,y rows every 0.25 m, beside the traces; written
+//! to a file of its own and renamed, so that runs of the same road in parallel cannot mix it.
+void write_path(const std::string& directory, const io::Scenario& scenario, std::size_t id) {
+  std::filesystem::create_directories(directory);
+  const std::string file = directory + "/path.csv";
+  const std::string part = file + "." + std::to_string(id);
+  {
+    std::ofstream out(part, std::ios::binary);
+    out << "x,y\n";
+    const std::size_t pieces = scenario.plan ? scenario.plan->piece_count() : 1;
+    char line[64];
+    for (std::size_t p = 0; p < pieces; ++p) {
+      const Path& path = scenario.plan ? *scenario.plan->piece(p).path : *scenario.path;
+      const double count = std::ceil(path.length() / 0.25);
+      for (double i = 0.0; i <= count; i += 1.0) {
+        const Vec2 at = path.evaluate(path.length() * i / count).position;
+        std::snprintf(line, sizeof line, "%.4f,%.4f\n", at.x, at.y);
+        out << line;
+      }
+    }
+    if (!out) throw std::runtime_error("road suite: writing " + part + " failed");
+  }
+  std::filesystem::rename(part, file);
+}
+
+Outcome run_case(const Case& c, const std::string& trace_directory, std::size_t id) {
   const std::string vehicle = std::filesystem::absolute(c.vehicle_file).string();
   std::vector<std::string> overrides{"vehicle.file=" + vehicle, "model=" + c.model};
   if (c.controller == certified) {
@@ -104,6 +129,7 @@ Outcome run_case(const Case& c, const std::string& trace_directory) {
   o.spun = o.max_heading > road_suite_spin_heading_error_rad ||
            o.max_slip > road_suite_spin_side_slip_rad || run.simulation.non_finite;
   if (!trace_directory.empty()) {
+    write_path(trace_directory + "/" + o.road, scenario, id);
     write_trace(
         trace_directory + "/" + o.road + "/" + o.car + "_" + o.model + "_" + o.controller + ".csv",
         run.simulation.trace);
@@ -168,7 +194,7 @@ RoadSuiteResult run_road_suite_comparison(const RoadSuiteOptions& options) {
   auto work = [&] {
     for (std::size_t i = next++; i < cases.size(); i = next++) {
       try {
-        outcomes[i] = run_case(cases[i], options.trace_directory);
+        outcomes[i] = run_case(cases[i], options.trace_directory, i);
       } catch (const std::exception& error) {
         const std::lock_guard<std::mutex> lock(failure_mutex);
         if (failure.empty()) failure = error.what();
