@@ -11,7 +11,9 @@ Each road is laid out from straights, clothoids and arcs the way the road-design
   * the speed profile from the path's curvature (speed.profile: curvature): the design speed on
     the straights, v <= sqrt(a_lat / |kappa|) with a_lat = g (e + f) of the design, accelerating
     at <= 1 m/s^2 and braking at <= 2 m/s^2 (well below the 3.4 m/s^2 that AASHTO's stopping
-    sight distance assumes, section 3.2).
+    sight distance assumes, section 3.2);
+  * the parking lot: the bay and aisle of 90 deg parking of the German EAR 2005 (FGSV), two cusps
+    (`gear:` on the pieces), a signed profile at 1.5 m/s that rests 1 s at each cusp.
 The numbers of each design are in the comments of its file. Run from the repository root:
 
     /usr/bin/python3 scripts/road_suite.py
@@ -319,7 +321,7 @@ metrics: {{reaching_threshold_m: 0.1}}
 
 def parking_lot():
     # Reverse into a 90 deg bay and drive out the other way: EAR 2005 (FGSV, "Empfehlungen fuer
-    # Anlagen des ruhenden Verkehrs", table 4) for 90 deg parking: bays 2.50 m wide and 5.00 m
+    # Anlagen des ruhenden Verkehrs") for 90 deg parking: bays 2.50 m wide and 5.00 m
     # deep, aisle 6.00 m. The rear axle runs 0.5 m beyond the aisle's centre line, 3.5 m from the
     # bay line (y = 0; the bay's centre line at x = 20 m); each turn is a clothoid A = 4 m into
     # R = 5 m and out (R/3 <= A <= R; L = 3.2 m), 90 deg in all. A = 4 m keeps the steering rate
@@ -344,7 +346,7 @@ def parking_lot():
     assert abs(lay.y) < 1e-6, lay.y
     design = [
         "Parking-lot manoeuvre with two cusps: along a 6.00 m aisle past a 90 deg bay of 2.50 m x",
-        "5.00 m (EAR 2005, FGSV: 90 deg parking, table 4), the rear axle 3.5 m from the bay line;",
+        "5.00 m (EAR 2005, FGSV: 90 deg parking), the rear axle 3.5 m from the bay line;",
         "stop, reverse into the bay (clothoid A = 4 m, R = 5 m, clothoid: 90 deg; the rear axle",
         "4 m deep), stop, drive out forwards turning right (the same turn mirrored) and 15 m on",
         "along the aisle. Each gear run starts and ends on a straight. A = 4 m: the clothoid asks",
