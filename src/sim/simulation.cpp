@@ -160,6 +160,29 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   return simulate(path, vehicle, actuator, speed, parameters, start, system, observer);
 }
 
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer) {
+  parameters.validate();
+  SteeringSystem system(controller,
+                        steering_system_parameters(parameters.side_slip, vehicle.parameters()));
+  return simulate(plan, vehicle, actuator, speed, parameters, start, system, observer);
+}
+
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller) {
+  // No reserve: a plan's duration is the profile's, not parameters.duration_s.
+  std::vector<TraceSample> trace;
+  SimulationResult result =
+      simulate(plan, vehicle, actuator, speed, parameters, start, controller,
+               [&trace](const TraceSample& sample) { trace.push_back(sample); });
+  result.trace = std::move(trace);
+  return result;
+}
+
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
@@ -167,6 +190,36 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   return collect_trace(parameters, [&](const TraceObserver& observer) {
     return simulate(path, vehicle, actuator, speed, parameters, start, system, observer);
   });
+}
+
+}  // namespace
+
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer) {
+  return closed_loop(path, nullptr, vehicle, actuator, speed, parameters, start, controller,
+                     observer);
+}
+
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer) {
+  return closed_loop(*plan.piece(0).path, &plan, vehicle, actuator, speed, parameters, start,
+                     controller, observer);
+}
+
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller) {
+  std::vector<TraceSample> trace;
+  SimulationResult result =
+      simulate(plan, vehicle, actuator, speed, parameters, start, controller,
+               [&trace](const TraceSample& sample) { trace.push_back(sample); });
+  result.trace = std::move(trace);
+  return result;
 }
 
 }  // namespace smoothsteer
