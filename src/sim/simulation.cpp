@@ -192,34 +192,4 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   });
 }
 
-}  // namespace
-
-SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller, const TraceObserver& observer) {
-  return closed_loop(path, nullptr, vehicle, actuator, speed, parameters, start, controller,
-                     observer);
-}
-
-SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller, const TraceObserver& observer) {
-  return closed_loop(*plan.piece(0).path, &plan, vehicle, actuator, speed, parameters, start,
-                     controller, observer);
-}
-
-SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller) {
-  std::vector<TraceSample> trace;
-  SimulationResult result =
-      simulate(plan, vehicle, actuator, speed, parameters, start, controller,
-               [&trace](const TraceSample& sample) { trace.push_back(sample); });
-  result.trace = std::move(trace);
-  return result;
-}
-
 }  // namespace smoothsteer
