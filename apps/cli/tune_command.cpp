@@ -13,8 +13,8 @@
 #include "commands.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/io/config_section.hpp"
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/path_demand.hpp"
 

@@ -8,13 +8,13 @@
 #include <memory>
 #include <string>
 
-#include "sim_test_support.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path_builder.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "support/property.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {

@@ -28,7 +28,7 @@
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
 #include "smoothsteer/evaluation/results_table.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 
 namespace smoothsteer {

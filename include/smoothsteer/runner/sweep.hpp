@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer::io {
 

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer::io {

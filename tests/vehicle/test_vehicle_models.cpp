@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "sim_test_support.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "support/property.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {

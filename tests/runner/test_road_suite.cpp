@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer::io {

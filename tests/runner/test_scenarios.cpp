@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "smoothsteer/io/controller_registry.hpp"
-#include "smoothsteer/io/run_output.hpp"
-#include "smoothsteer/io/scenario.hpp"
-#include "smoothsteer/io/sweep.hpp"
+#include "smoothsteer/runner/controller_registry.hpp"
+#include "smoothsteer/runner/run_output.hpp"
+#include "smoothsteer/runner/scenario.hpp"
+#include "smoothsteer/runner/sweep.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer::io {

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "smoothsteer/io/controller_registry.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/controller_registry.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer::io {

@@ -16,8 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include "apps/cli_process.hpp"
 #include "support/source_dir.hpp"
-#include "tools/cli_process.hpp"
 
 namespace smoothsteer::testing {
 namespace {

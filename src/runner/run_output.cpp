@@ -1,4 +1,4 @@
-#include "smoothsteer/io/run_output.hpp"
+#include "smoothsteer/runner/run_output.hpp"
 
 #include <cmath>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "smoothsteer/io/controller_registry.hpp"
+#include "smoothsteer/runner/controller_registry.hpp"
 
 #include <cmath>
 #include <limits>

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "smoothsteer/io/atomic_output.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer::io {
 

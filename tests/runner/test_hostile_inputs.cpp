@@ -11,11 +11,11 @@
 #include <fstream>
 
 #include "smoothsteer/io/atomic_output.hpp"
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
-#include "smoothsteer/io/sweep.hpp"
 #include "smoothsteer/io/text_checks.hpp"
 #include "smoothsteer/io/waypoint_csv.hpp"
+#include "smoothsteer/runner/scenario.hpp"
+#include "smoothsteer/runner/sweep.hpp"
 
 namespace smoothsteer::io {
 namespace {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "smoothsteer/io/config_section.hpp"
+#include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "smoothsteer/sim/simulation.hpp"
@@ -48,12 +49,6 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
 //! Loads, overrides, validates. Relative file references (vehicle file, waypoint CSV) are
 //! resolved against the scenario's directory.
 Scenario load_scenario(const std::string& file, const std::vector<std::string>& overrides = {});
-
-//! Checks a vehicle mapping (a vehicle file's root) against the simulation's vehicle schema
-//! exactly as load_scenario() does, and returns its parameters; the keys in `skipped` are left
-//! out (the tuner's `wheelbase_m`). Throws ConfigError naming `file` and the key.
-VehicleParameters check_vehicle_mapping(const YAML::Node& vehicle, const std::string& file,
-                                        const std::set<std::string>& skipped = {});
 
 //! Builds the path of a `path:` section (used by load_scenario; public for tests and tools).
 std::shared_ptr<const Path> make_path(ConfigSection& path_section,

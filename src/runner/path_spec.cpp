@@ -7,9 +7,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/waypoint_csv.hpp"
 #include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/validation.hpp"
 
 namespace smoothsteer::io {

@@ -1,4 +1,4 @@
-#include "smoothsteer/io/sweep.hpp"
+#include "smoothsteer/runner/sweep.hpp"
 
 #include <algorithm>
 #include <atomic>

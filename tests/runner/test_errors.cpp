@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer::io {
 namespace {

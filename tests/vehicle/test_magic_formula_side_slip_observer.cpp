@@ -9,12 +9,12 @@
 #include <cmath>
 #include <string>
 
-#include "sim_test_support.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "smoothsteer/vehicle/vehicle_model.hpp"
 #include "support/property.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {
