@@ -114,7 +114,8 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
       const double spacing = c.number("spacing_m", 1.0, {0.05, 10.0});
       if (!(x_end > x_start + 2.0 * spacing))
         c.fail("x_end_m", "must exceed x_start_m by 2 spacings");
-      // Counted, not accumulated: x += spacing stalls once x >> spacing (issue 12, defect 3).
+      // Counted, not accumulated: x += spacing stalls once x >> spacing (a far x_start_m would
+      // otherwise loop and allocate without end).
       const double count = std::floor((x_end - x_start) / spacing + 1e-9) + 1.0;
       if (count > static_cast<double>(max_waypoints)) {
         c.fail("x_end_m", "gives " + std::to_string(static_cast<long long>(count)) +

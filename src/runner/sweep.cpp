@@ -38,7 +38,8 @@ SweepAxis parse_sweep_axis(const std::string& text) {
 }
 
 std::vector<std::vector<std::string>> sweep_grid(const std::vector<SweepAxis>& axes) {
-  // Count first: 30 axes of 2 values are 2^30 rows (issue 12, defect 3).
+  // Count first: 30 axes of 2 values are 2^30 rows (an input-controlled count must be capped before
+  // anything is allocated).
   double rows = 1.0;
   for (const SweepAxis& axis : axes) rows *= static_cast<double>(axis.values.size());
   if (rows > static_cast<double>(max_sweep_rows)) {
