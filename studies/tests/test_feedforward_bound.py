@@ -1,4 +1,4 @@
-"""scripts/feedforward_bound.py: the linear programme's model and its optimum are checked against
+"""studies/feedforward_bound.py: the linear programme's model and its optimum are checked against
 an independent integration of the chain, and its ordering against feasible candidates."""
 import importlib.util
 import math
@@ -9,7 +9,7 @@ import numpy as np
 from conftest import ROOT, base_seed, property_cases
 
 _spec = importlib.util.spec_from_file_location("feedforward_bound",
-                                               ROOT / "scripts" / "feedforward_bound.py")
+                                               ROOT / "studies" / "feedforward_bound.py")
 bound = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(bound)
 

@@ -7,7 +7,7 @@ with actuator inversion, and prints a Markdown table of the rear axle's max |e| 
 8 s for circle_sections), the held command's largest rate and acceleration, the samples above the
 car's limits, the largest side slip and the slip estimate's largest error.
 
-    /usr/bin/python3 scripts/vehicle_dynamics_study.py [--cli build/ci/apps/smoothsteer]
+    /usr/bin/python3 studies/vehicle_dynamics_study.py [--cli build/ci/apps/smoothsteer]
 """
 import argparse
 import csv
@@ -63,11 +63,12 @@ def run(cli, scenario, overrides):
 
 def print_seed_spread(cli, seeds):
     """The shipped files' max |e| over the sensor-noise seeds 1..seeds (the files' own seed is one
-    draw of the pose and slip-sensor noise), and how many seeds meet issue 8's and issue 10's
-    targets."""
+    draw of the pose and slip-sensor noise), and how many seeds meet the certified-tuning and
+    the vehicle-dynamics targets."""
     targets = {"lane_change_10": (0.03, None), "lane_change_15": (0.05, 0.03),
                "lane_change_19": (0.5, 0.25), "circle_sections": (0.10, 0.05)}
-    print("| scenario | min | median | max | seeds within issue 8's / issue 10's target |")
+    print("| scenario | min | median | max | "
+          "seeds within the certified-tuning / vehicle-dynamics target |")
     print("|---|---|---|---|---|")
     for scenario in SCENARIOS:
         runs = [run(cli, scenario, [f"simulation.noise_seed={seed}"]) for seed in range(1, seeds + 1)]

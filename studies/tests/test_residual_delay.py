@@ -1,4 +1,4 @@
-"""scripts/residual_delay.py: the feedforward's inversion (docs/vehicle_dynamics.md section 3)
+"""studies/residual_delay.py: the feedforward's inversion (docs/vehicle_dynamics.md section 3)
 checked against the state-space single-track model written independently in the script, and the
 delays it reports checked against their closed forms."""
 import importlib.util
@@ -11,7 +11,7 @@ import smoothsteer
 from conftest import ROOT, base_seed, property_cases
 
 _spec = importlib.util.spec_from_file_location("residual_delay",
-                                               ROOT / "scripts" / "residual_delay.py")
+                                               ROOT / "studies" / "residual_delay.py")
 delay = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(delay)
 

@@ -15,7 +15,7 @@ Magic Formula coefficients, Rajamani ch. 2-3):
   (least squares), and, with --run, the file's figure at that delay against its own
   `actuator_delay_s`.
 
-    PYTHONPATH=build/ci/python /usr/bin/python3 scripts/residual_delay.py [--run]
+    PYTHONPATH=build/ci/python /usr/bin/python3 studies/residual_delay.py [--run]
 """
 import argparse
 import math

@@ -19,7 +19,7 @@ kinematic model, not for the car. Three figures per jump:
 * feedforward alone (w = 0): the best planned f;
 * certified class: the best planned f + w.
 
-    PYTHONPATH=build/ci/python /usr/bin/python3 scripts/feedforward_bound.py
+    PYTHONPATH=build/ci/python /usr/bin/python3 studies/feedforward_bound.py
         [--schedule scenarios/schedules/passenger_car_circle_sections.csv]
         [--jump SPEED:K1:K2 ...]
 
