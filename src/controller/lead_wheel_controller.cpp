@@ -75,26 +75,23 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
     last_steering_angle_ = vehicle_steering_angle;
     return;
   }
+  // The chain restarts in stationary cornering at the steering the car holds, so that delta_veh
+  // continues through a reset and a change of direction (at a cusp the rate v d delta / ds is
+  // zero on both sides). Only an angle outside the invariant set is clamped into it.
   const double front = std::clamp(front_angle_from_vehicle(vehicle_steering_angle),
                                   -bounds_.angle[0], bounds_.angle[0]);
-  // The certificate starts from stationary cornering on kappa_ff (steering_certificate.hpp): the
-  // lead curvature of the stationary chain, saturated at kbar_ff, is the initial kappa_ff.
-  const double rear_curvature = std::tan(front) / parameters_.wheelbases_m[0];
-  initialise_chain_on_feedforward(stationary_lead_curvature(rear_curvature, chain_length_squared_));
-}
-
-void LeadWheelController::initialise_chain_on_feedforward(double feedforward_curvature) noexcept {
-  const int n = parameters_.order;
-  const double bound = parameters_.feedforward_curvature_bound();
-  feedforward_curvature_ = std::clamp(feedforward_curvature, -bound, bound);
-  const double rear_curvature =
-      stationary_rear_curvature(feedforward_curvature_, chain_length_squared_);
-  stationary_chain(std::atan(parameters_.wheelbases_m[0] * rear_curvature),
-                   parameters_.wheelbases_m.data(), n, angles_);
-  for (int i = 0; i < n; ++i) {
+  stationary_chain(front, parameters_.wheelbases_m.data(), n, angles_);
+  for (int i = 1; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
   }
+  // The split certificate (steering_certificate.hpp) holds from a state whose switching response
+  // is within kbar_sw: kappa_ff takes the chain's stationary lead curvature, saturated at
+  // kbar_ff, and the rest, |kappa_n - kappa_ff| <= kbar_n - kbar_ff, is the switching part's.
+  const double rear_curvature = std::tan(front) / parameters_.wheelbases_m[0];
+  const double bound = parameters_.feedforward_curvature_bound();
+  feedforward_curvature_ =
+      std::clamp(stationary_lead_curvature(rear_curvature, chain_length_squared_), -bound, bound);
   last_steering_angle_ = vehicle_steering_angle_of_chain();
   governor_rate_ = 0.0;  // stationary cornering
   feedforward_envelope_ = std::abs(feedforward_curvature_);
@@ -221,6 +218,9 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
     target = stationary_rear_axle_target_curve(before - d, jet.value - d, after - d, h,
                                                chain_length_squared_);
     target.offset -= 0.5 * d * chain_reach_ * chain_reach_;
+    // The same bend turns the path's tangent by kappa_d l more than the chain's lead wheel,
+    // which in this steady state points that much across its own track (exact to O(kappa_d)).
+    target.heading -= d * chain_reach_;
   }
   target.curvature += d;
   return target;
@@ -261,13 +261,18 @@ void LeadWheelController::update_disturbance_estimate(const ControllerInput& inp
       input.speed_mps > 0.0) {
     const double distance = norm(input.rear_axle_position - previous_position_);
     if (distance > 1e-6) {
-      // The steering in effect over the last period: issued `actuator_delay_s` earlier.
-      const auto age = std::min<std::size_t>(
-          command_history_count_ - 1,
-          static_cast<std::size_t>(std::lround(parameters_.actuator_delay_s / input.period_s)));
+      // The steering in effect over the last period: issued `actuator_delay_s` earlier, plus
+      // the lag of the tires' slip that the single-track inversion previews (lag / g metres).
+      const double slip_lag_m = dynamics_preview_m_ - parameters_.preview_time_s * input.speed_mps;
+      const double delay = parameters_.actuator_delay_s + slip_lag_m / input.speed_mps;
+      const auto age =
+          std::min<std::size_t>(command_history_count_ - 1,
+                                static_cast<std::size_t>(std::lround(delay / input.period_s)));
       const double commanded =
           std::tan(issued_command(age).steering_rad) / parameters_.vehicle_wheelbase_m;
-      const double measured = wrap_angle(course - previous_course_) / distance;
+      // In the chain's units: the inversion steers g kappa for a course curvature kappa
+      // (understeer is the model's, not a disturbance), so the disturbance is g kappa - command.
+      const double measured = dynamics_gain_ * wrap_angle(course - previous_course_) / distance;
       const double gain = std::min(1.0, distance / length);
       const double bound = parameters_.feedforward_curvature_bound();
       disturbance_estimate_ =
@@ -298,7 +303,13 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
     const IssuedCommand& command = issued_command(k);
     const double duration = command.period_s - overshoot;
     overshoot = 0.0;
-    pose = model.step(pose, command.steering_rad, input.speed_mps, duration);
+    // The car turns by the estimated plant disturbance too: tan(delta) + lambda_veh kappa_d.
+    const double steering =
+        disturbance_estimate_ == 0.0
+            ? command.steering_rad
+            : std::atan(std::tan(command.steering_rad) +
+                        parameters_.vehicle_wheelbase_m * disturbance_estimate_);
+    pose = model.step(pose, steering, input.speed_mps, duration);
   }
   return pose;
 }
@@ -316,7 +327,6 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     direction_ = sign(input.speed_mps);
     initialise_chain(last_steering_angle_);
   }
-  update_disturbance_estimate(input);
   // Where the feedforward reads the path (ControllerParameters::preview_time_s).
   const double speed_magnitude = std::abs(input.speed_mps);
   {
@@ -331,6 +341,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
                             ? front * rear * v2 * v2 - 0.5 * lag * lag / dynamics_gain_
                             : 0.0;
   }
+  update_disturbance_estimate(input);
   // With a known actuator delay the law acts on the pose at which this command will take effect.
   const Pose2 law_pose = predicted_pose(input);
 
@@ -464,8 +475,10 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
                                applied_curvature)
               .rate_radps;
     }
-    // Rear-axle prediction along an arc of the mean chain curvature over the sub-step.
-    const double curvature = 0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0];
+    // Rear-axle prediction along an arc of the mean chain curvature over the sub-step, plus the
+    // plant's estimated disturbance.
+    const double curvature = 0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0] +
+                             disturbance_estimate_;
     const double half_turn = 0.5 * curvature * step_length;
     position = position + step_length * unit_from_heading(heading + half_turn);
     heading += 2.0 * half_turn;

@@ -186,6 +186,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   p.stop_beyond_path_end_m = sim.number("stop_beyond_path_end_m", p.stop_beyond_path_end_m);
   p.matched_disturbance = sim.number("matched_disturbance", 0.0, {-1.0, 1.0});
   p.plant_curvature_disturbance = sim.number("plant_curvature_disturbance", 0.0, {-1.0, 1.0});
+  p.steering_offset_rad = sim.number("steering_offset_rad", 0.0, {-0.1, 0.1});
   p.position_noise_std_m = sim.number("position_noise_std_m", 0.0, Range::non_negative());
   p.heading_noise_std_rad = sim.number("heading_noise_std_rad", 0.0, Range::non_negative());
   p.noise_seed = static_cast<std::uint64_t>(sim.integer("noise_seed", 1, 0, 2147483647));

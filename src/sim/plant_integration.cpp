@@ -23,6 +23,7 @@ namespace {
 using PlantArray = std::array<double, VehicleState::size>;
 
 double effective(const PlantContext& c, double delta) noexcept {
+  delta += c.steering_offset_rad;
   if (c.plant_disturbance == 0.0) return delta;
   return std::atan(std::tan(delta) + c.model.parameters().wheelbase_m() * c.plant_disturbance);
 }

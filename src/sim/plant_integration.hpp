@@ -30,6 +30,7 @@ struct PlantContext {
   std::uint64_t* model_evaluations = nullptr;
   std::uint64_t* fallback_periods = nullptr;  //!< periods left to fixed_rk4 by rkf78 / dopri5
   double* input_buffer = nullptr;             //!< room for `substeps` delayed inputs
+  double steering_offset_rad = 0.0;           //!< the road wheels steer delta + this [rad]
 };
 
 //! Advances the vehicle state, the actuator (its delay line included) and the travelled

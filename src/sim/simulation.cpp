@@ -145,6 +145,9 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
     return bad("plant_curvature_disturbance", plant_curvature_disturbance,
                "must be in [-1, 1] 1/m");
   }
+  if (!std::isfinite(steering_offset_rad) || std::abs(steering_offset_rad) > 0.1) {
+    return bad("steering_offset_rad", steering_offset_rad, "must be in [-0.1, 0.1] rad");
+  }
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
     return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
   }
@@ -237,7 +240,8 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                                    parameters.integrator_tolerance,
                                    &result.model_evaluations,
                                    &result.plant_fallback_periods,
-                                   input_buffer.data()};
+                                   input_buffer.data(),
+                                   parameters.steering_offset_rad};
 
   std::mt19937_64 engine(parameters.noise_seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);

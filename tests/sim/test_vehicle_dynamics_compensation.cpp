@@ -285,7 +285,7 @@ namespace {
 // feedforward absorbs it: the steady rear-axle offset shrinks by at least a quarter (typically
 // 30-60 %). It does not vanish (docs/feedforward.md, "disturbances on the vehicle", says why this
 // is still open).
-TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndShrinksTheOffset) {
+TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndRemovesTheOffset) {
   const VehicleParameters car;
   const int cases = testing::property_cases(20);
   for (int c = 0; c < cases; ++c) {
@@ -329,8 +329,12 @@ TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndShrinksTheOffset) {
                                (circle ? " circle R " : " line ") + std::to_string(radius) + " v " +
                                std::to_string(speed) + "; " + testing::seed_message(seed);
     EXPECT_NEAR(with.estimate, disturbance, 0.03 * std::abs(disturbance)) << inputs;
-    EXPECT_LT(with.offset, 0.75 * without.offset)
+    // The target's heading carries the chain's steady cross-track angle kappa_d l
+    // (lead_wheel_controller.cpp, target_curve): the offset goes, not only a part of it
+    // (at most 3.2 % and 4.9 mm over 300 seeds).
+    EXPECT_LT(with.offset, 0.05 * without.offset)
         << "with " << with.offset << " without " << without.offset << "; " << inputs;
+    EXPECT_LT(with.offset, 0.008) << "without " << without.offset << "; " << inputs;
   }
 }
 

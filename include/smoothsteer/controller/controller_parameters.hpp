@@ -104,8 +104,12 @@ struct ControllerParameters {
   //! kbar_n: curvature bound of the lead wheel [1/m] (eq. kappan). The bounds of the wheels
   //! behind it follow from the invariant sets (paper_notes §2).
   double lead_curvature_bound = 0.2;
-  //! k_rob in [0, 1): robustness margin against matched disturbances |kappa_d| <= k_rob kbar_n
-  //! (eq. sigma). Path curvature is such a disturbance.
+  //! k_rob in [0, 1): robustness margin of the switching law (eq. sigma) against matched
+  //! disturbances |kappa_d| <= k_rob kbar_sw, kbar_sw = (1 - feedforward_share) kbar_n: the
+  //! switching part alone must cover them (docs/feedforward.md, section 4). With the paper's law
+  //! (feedforward_share = 0) that is k_rob kbar_n, and the path's curvature is such a
+  //! disturbance; with the default share 0.5 it is half of it.
+  //! ClosedLoopProperties.MatchedDisturbanceIsRejected tests up to 0.95 of this bound.
   double k_rob = 0.3;
   //! psi_max in (0, pi/2]: heading relative to the path with which the lead wheel approaches
   //! from far away. pi/2 gives the Dubins turn-straight-turn.

@@ -103,9 +103,9 @@ class LeadWheelController final : public SteeringController {
   void apply_parameters(const ControllerParameters& parameters) noexcept;
   //! Heading of the direction of travel: psi, or psi + pi while reversing.
   double travel_heading(double heading) const noexcept;
+  //! Stationary chain at this delta_veh (clamped into the invariant set only), kappa_ff := its
+  //! lead curvature saturated at kbar_ff: the command continues through resets and cusps.
   void initialise_chain(double vehicle_steering_angle) noexcept;
-  //! Stationary chain whose lead curvature is kappa_ff, and kappa_ff := that curvature.
-  void initialise_chain_on_feedforward(double feedforward_curvature) noexcept;
   double front_angle_from_vehicle(double vehicle_steering_angle) const noexcept;
   double vehicle_steering_angle_of_chain() const noexcept;
   //! Low-pass of the measured minus the commanded rear-axle curvature

@@ -86,6 +86,9 @@ struct SimulationParameters {
   //! Curvature disturbance kappa_d [1/m] on the PLANT's rear axle, whatever the controller
   //! (understeer, a banked road, a steering offset): tan(delta_eff) = tan(delta) + L kappa_d.
   double plant_curvature_disturbance = 0.0;
+  //! Constant offset of the road wheels from the angle the actuator delivers [rad] (a
+  //! misaligned rack or wheel alignment): the plant steers delta + offset; |offset| <= 0.1.
+  double steering_offset_rad = 0.0;
   double position_noise_std_m = 0.0;   //!< std of Gaussian noise on x and y of the rear axle [m]
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
