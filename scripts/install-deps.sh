@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev coinor-libipopt-dev libalglib-dev
   libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   python3-numpy python3-scipy python3-matplotlib python3-dev python3-pybind11 pybind11-dev python3-pytest
+  python3-distributed python3-pandas python3-tqdm python3-yaml python3-pil
   clang-14 libclang-rt-14-dev
 )
 

@@ -9,8 +9,13 @@
 //                 (the study of docs/baselines.md; scenario NAME@V: NAME at V m/s)
 //   engagement    the lane changes started off the path: certified vs baselines vs the
 //                 optimal-control lower bound (docs/engagement.md)
+//   road-suite    every controller on the road suite x the three cars x both plants
+//                 (docs/results/road_suite.md)
+// --plant dynamic|double_track sets the plant of the reported runs (lane-change, the tuning
+// study's held-out scenarios; the training keeps its scenarios' plant: the held-out plant).
 // Options of `compare` work before or after the sub-command (`compare parameters -o DIR`).
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -20,6 +25,7 @@
 #include "smoothsteer/evaluation/engagement_study.hpp"
 #include "smoothsteer/evaluation/paper_figures.hpp"
 #include "smoothsteer/evaluation/reaching_benchmark.hpp"
+#include "smoothsteer/evaluation/road_suite_comparison.hpp"
 #include "smoothsteer/evaluation/scenario_comparison.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
@@ -43,6 +49,9 @@ struct CompareOptions {
   std::vector<std::string> held_out{"lane_change_10", "lane_change_15", "lane_change_19",
                                     "circle_sections"};
   std::vector<std::string> controllers = study_controller_names();
+  //! The plant of the reported runs: empty (each scenario's own model), dynamic, double_track.
+  std::string plant;
+  RoadSuiteOptions road_suite;        // road_files: roads/*.yaml and hairpin.yaml of --scenarios
   EngagementStudyOptions engagement;  // scenario_files: lane_change_{10,15,19} of --scenarios
 };
 
@@ -53,19 +62,27 @@ void emit(const ResultsTable& table, const CompareOptions& options, const std::s
 }
 
 //! NAME is scenarios/NAME.yaml; NAME@V the same file at the constant speed V m/s, named so.
+//! The override of --plant (none without it).
+std::vector<std::string> plant_overrides(const std::string& plant) {
+  if (plant.empty()) return {};
+  return {"model=" + plant};
+}
+
 std::vector<io::Scenario> load_scenarios(const CompareOptions& options,
-                                         const std::vector<std::string>& names) {
+                                         const std::vector<std::string>& names,
+                                         const std::string& plant = "") {
   std::vector<io::Scenario> scenarios;
   for (const std::string& spec : names) {
     const std::size_t at = spec.find('@');
     const std::string file = options.scenario_directory + "/" + spec.substr(0, at) + ".yaml";
+    std::vector<std::string> overrides = plant_overrides(plant);
     if (at == std::string::npos) {
-      scenarios.push_back(io::load_scenario(file));
+      scenarios.push_back(io::load_scenario(file, overrides));
       continue;
     }
     const std::string speed = spec.substr(at + 1);
-    io::Scenario scenario =
-        io::load_scenario(file, {"speed={initial_mps: " + speed + ", final_mps: " + speed + "}"});
+    overrides.push_back("speed={initial_mps: " + speed + ", final_mps: " + speed + "}");
+    io::Scenario scenario = io::load_scenario(file, overrides);
     scenario.name = spec;
     scenarios.push_back(std::move(scenario));
   }
@@ -117,6 +134,44 @@ void add_engagement_command(CLI::App& compare, const std::shared_ptr<CompareOpti
   });
 }
 
+void add_road_suite_command(CLI::App& compare, const std::shared_ptr<CompareOptions>& options) {
+  CLI::App* road = compare.add_subcommand(
+      "road-suite", "every controller on the road suite x the three cars x both plants");
+  RoadSuiteOptions& defaults = options->road_suite;
+  defaults.vehicle_files = {"vehicles/ford_escort.yaml", "vehicles/bmw_320i.yaml",
+                            "vehicles/vw_vanagon.yaml"};
+  defaults.controllers = road_suite_controller_names();
+  road->add_option("--roads", defaults.road_files,
+                   "road scenario files (default: <scenarios>/roads/*.yaml and hairpin.yaml)");
+  road->add_option("--vehicles", defaults.vehicle_files, "vehicle files")->capture_default_str();
+  road->add_option("--plants", defaults.models, "plants (scenario models)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"dynamic", "double_track", "kinematic"}));
+  road->add_option("--controllers", defaults.controllers, "certified and baseline names")
+      ->capture_default_str();
+  road->add_option("--traces", defaults.trace_directory,
+                   "write each run's trace here (scripts/road_suite_figures.py)");
+  road->add_option("--threads", defaults.threads, "worker threads")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  road->callback([options] {
+    RoadSuiteOptions suite = options->road_suite;
+    if (!options->plant.empty()) suite.models = {options->plant};
+    if (suite.road_files.empty()) {
+      const std::filesystem::path roads =
+          std::filesystem::path(options->scenario_directory) / "roads";
+      for (const auto& entry : std::filesystem::directory_iterator(roads)) {
+        if (entry.path().extension() == ".yaml") suite.road_files.push_back(entry.path().string());
+      }
+      std::sort(suite.road_files.begin(), suite.road_files.end());
+      suite.road_files.push_back(options->scenario_directory + "/hairpin.yaml");
+    }
+    const RoadSuiteResult result = run_road_suite_comparison(suite);
+    emit(result.runs, *options, "road_suite");
+    emit(result.summary, *options, "road_suite_summary");
+  });
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
@@ -129,6 +184,11 @@ void add_compare_command(CLI::App& app) {
       ->capture_default_str();
   compare->add_option("--scenarios", options->scenario_directory, "directory of scenario files")
       ->capture_default_str();
+  compare
+      ->add_option("--plant", options->plant,
+                   "plant of the reported runs: dynamic (single-track) or double_track; default: "
+                   "each scenario's own")
+      ->check(CLI::IsMember({"dynamic", "double_track", "kinematic"}));
   compare
       ->add_option("--paper-figures", options->paper_figures_file,
                    "the paper's published figures (CSV); empty: none")
@@ -158,7 +218,10 @@ void add_compare_command(CLI::App& app) {
     for (const char* speed : {"10", "15", "19"}) {
       files.push_back(options->scenario_directory + "/lane_change_" + speed + ".yaml");
     }
-    emit(run_lane_change_comparison(files, paper_figures(*options)), *options, "lane_change");
+    ResultsTable table =
+        run_lane_change_comparison(files, paper_figures(*options), plant_overrides(options->plant));
+    if (!options->plant.empty()) table.title += " (plant: model " + options->plant + ")";
+    emit(table, *options, options->plant.empty() ? "lane_change" : "lane_change_" + options->plant);
   });
   CLI::App* parameters =
       compare->add_subcommand("parameters", "circle_sections with the settings of Sec. IV-A");
@@ -182,11 +245,16 @@ void add_compare_command(CLI::App& app) {
     rule.controllers = options->controllers;
     const TuningRuleResult result =
         run_tuning_rule(load_scenarios(*options, options->training),
-                        load_scenarios(*options, options->held_out), rule);
-    emit(result.table(), *options, "tuning_rule");
-    emit(result.timings_table(), *options, "tuning_rule_timings");
+                        load_scenarios(*options, options->held_out, options->plant), rule);
+    const std::string stem =
+        options->plant.empty() ? "tuning_rule" : "tuning_rule_" + options->plant;
+    ResultsTable table = result.table();
+    if (!options->plant.empty()) table.title += " (held-out plant: model " + options->plant + ")";
+    emit(table, *options, stem);
+    emit(result.timings_table(), *options, stem + "_timings");
   });
   add_engagement_command(*compare, options);
+  add_road_suite_command(*compare, options);
 }
 
 }  // namespace smoothsteer::cli

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_plan.hpp"
 
 extern char** environ;
 
@@ -55,16 +56,21 @@ std::string find_plot_script() {
                            "); set SMOOTHSTEER_PLOT_SCRIPT");
 }
 
-void write_path_csv(const Path& path, const std::string& file) {
+void write_path_csv(const Path& path, const std::string& file, const PathPlan* plan) {
   constexpr double spacing_m = 0.25;
   constexpr double max_rows = 20000.0;
-  const double intervals = std::clamp(std::ceil(path.length() / spacing_m), 1.0, max_rows - 1.0);
   std::ofstream out(file, std::ios::binary);
   out.precision(9);
   out << "x,y\n";
-  for (double i = 0.0; i <= intervals; i += 1.0) {
-    const PathPoint point = path.evaluate(path.length() * i / intervals);
-    out << point.position.x << ',' << point.position.y << '\n';
+  const std::size_t pieces = plan ? plan->piece_count() : 1;
+  for (std::size_t p = 0; p < pieces; ++p) {  // a plan's pieces one after the other
+    const Path& piece = plan ? *plan->piece(p).path : path;
+    const double intervals = std::clamp(std::ceil(piece.length() / spacing_m), 1.0,
+                                        max_rows / static_cast<double>(pieces) - 1.0);
+    for (double i = 0.0; i <= intervals; i += 1.0) {
+      const PathPoint point = piece.evaluate(piece.length() * i / intervals);
+      out << point.position.x << ',' << point.position.y << '\n';
+    }
   }
   out.flush();
   if (!out) throw std::runtime_error("--plot: writing " + file + " failed");

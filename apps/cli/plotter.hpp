@@ -6,13 +6,15 @@
 
 namespace smoothsteer {
 class Path;
-}
+class PathPlan;
+}  // namespace smoothsteer
 
 namespace smoothsteer::cli {
 
 //! Writes the reference path as "x,y" rows (every 0.25 m, at most 20 000 rows) for the plot
-//! script, which draws the path itself rather than the closest points of the trace.
-void write_path_csv(const Path& path, const std::string& file);
+//! script, which draws the path itself rather than the closest points of the trace. With
+//! `plan`, its pieces one after the other (a path with gear changes) instead of `path`.
+void write_path_csv(const Path& path, const std::string& file, const PathPlan* plan = nullptr);
 
 //! The plot script: $SMOOTHSTEER_PLOT_SCRIPT if set, else the first existing of
 //! <executable dir>/../share/smoothsteer/plot_trace.py (installed layout),

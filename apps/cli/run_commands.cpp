@@ -59,7 +59,7 @@ void run(const RunOptions& options) {
   }
   const bool ok = result.simulation.status == Status::ok && !result.simulation.non_finite;
   if (options.plot && ok) {
-    write_path_csv(*scenario.path, out.file("path.csv").string());
+    write_path_csv(*scenario.path, out.file("path.csv").string(), scenario.plan.get());
     run_plotter(script, out.file("trace.csv").string(), out.file("trace.png").string());
   }
   // Published even when the run stopped early: the trace shows where and why.

@@ -139,6 +139,7 @@ void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   has_previous_pose_ = false;
   previous_speed_ = -1.0;
   disturbance_estimate_ = 0.0;
+  steady_path_m_ = 0.0;
   command_history_count_ = 0;
   command_history_next_ = 0;
   rear_hint_.reset();
@@ -273,7 +274,20 @@ void LeadWheelController::update_disturbance_estimate(const ControllerInput& inp
       // In the chain's units: the inversion steers g kappa for a course curvature kappa
       // (understeer is the model's, not a disturbance), so the disturbance is g kappa - command.
       const double measured = dynamics_gain_ * wrap_angle(course - previous_course_) / distance;
-      const double gain = std::min(1.0, distance / length);
+      // Learn where the path has let the car settle: while the path's curvature moves, the slip
+      // and actuator transients that the model leaves read as a disturbance. The path at the
+      // rear axle counts as steady while its lateral jerk v^3 |d kappa / ds| stays below
+      // steady_lateral_jerk_mps3; the weight grows from 0 to 1 over the settling distance after.
+      const double v = input.speed_mps;
+      const double moved = std::abs(rear_path_curvature_ - previous_rear_path_curvature_);
+      if (moved > steady_lateral_jerk_mps3 / (v * v * v) * distance) {
+        steady_path_m_ = 0.0;
+      } else {
+        steady_path_m_ += distance;
+      }
+      const double settling_m = std::max(min_settling_m, settling_time_s * v);
+      const double weight = std::clamp(steady_path_m_ / settling_m - 1.0, 0.0, 1.0);
+      const double gain = weight * std::min(1.0, distance / length);
       const double bound = parameters_.feedforward_curvature_bound();
       disturbance_estimate_ =
           std::clamp(disturbance_estimate_ + gain * (measured - commanded - disturbance_estimate_),
@@ -282,6 +296,7 @@ void LeadWheelController::update_disturbance_estimate(const ControllerInput& inp
   }
   previous_position_ = input.rear_axle_position;
   previous_course_ = course;
+  previous_rear_path_curvature_ = rear_path_curvature_;
   has_previous_pose_ = true;
 }
 
@@ -511,6 +526,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
 
   // Diagnostics of the real axles.
   const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
+  rear_path_curvature_ = rear_projection.curvature;
   const Vec2 front_axle = input.rear_axle_position +
                           parameters_.vehicle_wheelbase_m * unit_from_heading(input.heading_rad);
   const PathProjection front_projection = path_->project(front_axle, front_hint_);

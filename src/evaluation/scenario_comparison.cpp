@@ -24,7 +24,8 @@ std::vector<std::string> held_columns(const Metrics& m) {
 }  // namespace
 
 ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files,
-                                        const PaperFigures& paper) {
+                                        const PaperFigures& paper,
+                                        const std::vector<std::string>& overrides) {
   ResultsTable table;
   table.title = "Lane change (Falcone et al. 2007) on the kinetic model with actuator";
   table.header = {"speed_mps",           "controller",          "max_abs_e_m",
@@ -41,7 +42,7 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
     table.rows.push_back(std::move(row));
   };
   for (const std::string& file : scenario_files) {
-    const io::Scenario scenario = io::load_scenario(file);
+    const io::Scenario scenario = io::load_scenario(file, overrides);
     const double speed = scenario.speed.initial_speed_mps;
     const std::string speed_key = ResultsTable::number(speed, 1);
     // The scenario's own controller: the certified lead-wheel controller of its schedule.

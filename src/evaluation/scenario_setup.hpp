@@ -10,6 +10,7 @@
 // lag. The actuator's own 24 ms makes the tuned MPC worse (docs/baselines.md). Autoware sets
 // vehicle_model_steer_tau per vehicle; its default 0.3 s is for another steering system.
 
+#include <cmath>
 #include <numbers>
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
@@ -21,7 +22,7 @@ inline ComparisonSetup comparison_setup_for(const io::Scenario& scenario) {
   ComparisonSetup setup;
   setup.path = scenario.path;
   setup.wheelbase_m = scenario.vehicle.wheelbase_m();
-  setup.nominal_speed_mps = scenario.speed.initial_speed_mps;
+  setup.nominal_speed_mps = std::abs(scenario.speed.initial_speed_mps);  // < 0: reversing
   setup.limits = {scenario.actuator.max_angle_rad, scenario.actuator.max_rate_radps,
                   scenario.vehicle.max_steering_acceleration_radps2};
   if (!scenario.actuator.ideal && scenario.actuator.bandwidth_hz > 0.0) {

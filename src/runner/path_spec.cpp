@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "smoothsteer/io/waypoint_csv.hpp"
+#include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path_builder.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/validation.hpp"
@@ -61,7 +62,8 @@ void add_clothoid(ConfigSection& piece, PathBuilder& builder) {
 
 }  // namespace
 
-std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_directory) {
+std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_directory,
+                                      std::shared_ptr<const PathPlan>* plan) {
   const std::string type =
       c.text("type", "straight",
              {"straight", "circle", "segments", "lane_change", "waypoints", "waypoints_csv"});
@@ -81,6 +83,11 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
     }
     if (type == "segments") {
       PathBuilder builder(point(c, "start", {0.0, 0.0}), c.number("heading_rad", 0.0));
+      // Gear changes (docs/cusps.md): a piece with `gear` other than the current one starts a
+      // new path at the cusp, in the new direction of travel (heading + pi).
+      Gear gear = Gear::forward;
+      std::vector<PathPiece> runs;
+      bool run_started = false;
       const YAML::Node pieces = c.raw("pieces");
       if (!pieces || !pieces.IsSequence() || pieces.size() == 0) {
         c.fail("pieces",
@@ -92,6 +99,19 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
       for (std::size_t i = 0; i < pieces.size(); ++i) {
         ConfigSection piece(pieces[i], c.full_key("pieces") + "[" + std::to_string(i) + "]",
                             c.file());
+        if (piece.has("gear")) {
+          const Gear next = piece.text("gear", "forward", {"forward", "reverse"}) == "forward"
+                                ? Gear::forward
+                                : Gear::reverse;
+          if (next != gear && !run_started) gear = next;  // the first piece's gear
+          if (next != gear) {
+            if (!plan) piece.fail("gear", "a change of gear needs a closed-loop run on a plan");
+            runs.push_back({std::make_shared<const Path>(builder.build()), gear});
+            builder = PathBuilder(builder.end_position(), builder.end_heading_rad() + pi);
+            gear = next;
+          }
+        }
+        run_started = true;
         if (piece.has("line_m")) {
           builder.line(piece.number("line_m", 0.0, Range::positive()));
         } else if (piece.has("clothoid_m") || piece.has("clothoid_parameter_m")) {
@@ -106,7 +126,14 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
         resolved.push_back(piece.resolved());
       }
       c.store("pieces", resolved);
-      return std::make_shared<const Path>(builder.build(c.boolean("closed", false)));
+      const bool closed = c.boolean("closed", false);
+      if (!runs.empty() || gear == Gear::reverse) {
+        if (closed) c.fail("closed", "a path with gears (gear: reverse) cannot be closed");
+        runs.push_back({std::make_shared<const Path>(builder.build()), gear});
+        *plan = std::make_shared<const PathPlan>(PathPlan::from_pieces(runs));
+        return (*plan)->piece(0).path;
+      }
+      return std::make_shared<const Path>(builder.build(closed));
     }
     if (type == "lane_change") {
       const double x_start = c.number("x_start_m", -30.0);

@@ -75,12 +75,15 @@ RunResult run_scenario(const Scenario& scenario, OutputDirectory& out) {
   TraceCsvWriter trace(out.file("trace.csv").string());
   MetricsAccumulator metrics(scenario.metrics);
   RunResult result;
-  result.simulation =
-      simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
-               scenario.start, *controller, [&](const TraceSample& sample) {
-                 trace.write(sample);
-                 metrics.add(sample);
-               });
+  const TraceObserver observer = [&](const TraceSample& sample) {
+    trace.write(sample);
+    metrics.add(sample);
+  };
+  result.simulation = scenario.plan
+                          ? simulate(*scenario.plan, *model, scenario.actuator, scenario.speed,
+                                     scenario.simulation, scenario.start, *controller, observer)
+                          : simulate(*scenario.path, *model, scenario.actuator, scenario.speed,
+                                     scenario.simulation, scenario.start, *controller, observer);
   trace.close();
   result.metrics = metrics.result();
   result.controller_name = controller->name();

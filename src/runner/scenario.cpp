@@ -9,6 +9,7 @@
 #include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/runner/controller_registry.hpp"
 #include "smoothsteer/sim/curvature_speed_profile.hpp"
+#include "smoothsteer/sim/gear_changes.hpp"
 
 namespace smoothsteer::io {
 namespace {
@@ -164,6 +165,9 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
     if (speed.has("initial_mps")) {
       l.initial_speed_mps = speed.required_number("initial_mps", {0.0, 100.0, true, false});
     }
+    if (speed.has("cusp_rest_s")) {
+      l.cusp_rest_s = speed.required_number("cusp_rest_s", {0.0, 60.0, true, false});
+    }
     speed.finish();
     check(speed, l);
   }
@@ -239,9 +243,28 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   // Required (docs/scenarios.md): a file with only `name:` must not run on defaults.
   if (!c.has("path")) c.fail("path", "is required (e.g. path: {type: straight})");
   ConfigSection path = c.section("path");
-  s.path = make_path(path, directory);
+  s.path = make_path(path, directory, &s.plan);
   path.finish();
-  if (curvature_limits) s.speed = curvature_speed_profile(*s.path, *curvature_limits);
+  if (s.plan && !curvature_limits) {
+    speed.fail("profile",
+               "must be 'curvature' on a path with gear changes (the car comes to "
+               "rest at every cusp; docs/cusps.md)");
+  }
+  if (s.plan) {
+    try {
+      s.speed = curvature_speed_profile(*s.plan, *curvature_limits);
+    } catch (const std::invalid_argument& error) {
+      speed.fail("profile", error.what());
+    }
+    try {
+      check_gear_changes(*s.plan, s.speed, s.simulation.control_period_s);
+    } catch (const std::invalid_argument& error) {
+      speed.fail("cusp_rest_s", error.what());
+    }
+    speed.store("cusp_rest_s", YAML::Node(curvature_limits->cusp_rest_s));
+  } else if (curvature_limits) {
+    s.speed = curvature_speed_profile(*s.path, *curvature_limits);
+  }
 
   s.controller = c.raw("controller");
   YAML::Node resolved_controller;
@@ -276,7 +299,8 @@ RunResult run_scenario(const Scenario& s, SteeringController& controller) {
   RunResult result;
   const std::unique_ptr<VehicleModel> model = make_vehicle_model(s);
   result.simulation =
-      simulate(*s.path, *model, s.actuator, s.speed, s.simulation, s.start, controller);
+      s.plan ? simulate(*s.plan, *model, s.actuator, s.speed, s.simulation, s.start, controller)
+             : simulate(*s.path, *model, s.actuator, s.speed, s.simulation, s.start, controller);
   result.metrics = compute_metrics(result.simulation.trace, s.metrics);
   result.controller_name = controller.name();
   return result;

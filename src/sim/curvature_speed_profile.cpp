@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace smoothsteer {
 
@@ -29,10 +32,17 @@ std::optional<Violation> CurvatureSpeedLimits::first_violation() const noexcept 
   if (!(spacing_m >= 0.01 && spacing_m <= 10.0)) {
     return bad("spacing_m", spacing_m, "must be in [0.01, 10]");
   }
+  if (!(cusp_rest_s > 0.0 && cusp_rest_s <= 60.0)) {
+    return bad("cusp_rest_s", cusp_rest_s, "must be in (0, 60]");
+  }
   return std::nullopt;
 }
 
-std::vector<double> curvature_limited_speeds(const Path& path, const CurvatureSpeedLimits& limits) {
+namespace {
+
+//! The limited speeds with v(0) <= first and v(end) <= last.
+std::vector<double> limited_speeds(const Path& path, const CurvatureSpeedLimits& limits,
+                                   double first, double last) {
   limits.validate();
   const double length = path.length();
   const auto intervals =
@@ -61,7 +71,8 @@ std::vector<double> curvature_limited_speeds(const Path& path, const CurvatureSp
                                   std::sqrt(limits.max_lateral_acceleration_mps2 / kappa))
                        : limits.max_speed_mps;
   }
-  if (limits.initial_speed_mps) v[0] = std::min(v[0], *limits.initial_speed_mps);
+  v[0] = std::min(v[0], first);
+  v.back() = std::min(v.back(), last);
   for (std::size_t i = 1; i <= intervals; ++i) {
     v[i] = std::min(v[i], std::sqrt(v[i - 1] * v[i - 1] + 2.0 * limits.max_acceleration_mps2 * ds));
   }
@@ -71,20 +82,67 @@ std::vector<double> curvature_limited_speeds(const Path& path, const CurvatureSp
   return v;
 }
 
+//! Appends the knots of speeds `v` on a grid of `ds`, times `sign`, from the last knot's time
+//! (whose speed is v[0]).
+void append_knots(std::vector<SpeedKnot>& knots, const std::vector<double>& v, double ds,
+                  double sign) {
+  double t = knots.back().time_s;
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    t += 2.0 * ds / (v[i - 1] + v[i]);
+    knots.push_back({t, sign * v[i]});
+  }
+}
+
+}  // namespace
+
+std::vector<double> curvature_limited_speeds(const Path& path, const CurvatureSpeedLimits& limits) {
+  return limited_speeds(path, limits, limits.initial_speed_mps.value_or(limits.max_speed_mps),
+                        std::numeric_limits<double>::infinity());
+}
+
 SpeedProfile curvature_speed_profile(const Path& path, const CurvatureSpeedLimits& limits) {
   const std::vector<double> v = curvature_limited_speeds(path, limits);
   const double ds = path.length() / static_cast<double>(v.size() - 1);
   auto knots = std::make_shared<std::vector<SpeedKnot>>();
   knots->reserve(v.size());
-  double t = 0.0;
   knots->push_back({0.0, v[0]});
-  for (std::size_t i = 1; i < v.size(); ++i) {
-    t += 2.0 * ds / (v[i - 1] + v[i]);
-    knots->push_back({t, v[i]});
-  }
+  append_knots(*knots, v, ds, 1.0);
   SpeedProfile profile;
   profile.initial_speed_mps = v.front();
   profile.final_speed_mps = v.back();
+  profile.knots = std::move(knots);
+  profile.validate();
+  return profile;
+}
+
+SpeedProfile curvature_speed_profile(const PathPlan& plan, const CurvatureSpeedLimits& limits) {
+  limits.validate();
+  auto knots = std::make_shared<std::vector<SpeedKnot>>();
+  const bool stops = plan.cusp_count() > 0;
+  for (std::size_t p = 0; p < plan.piece_count(); ++p) {
+    const Path& path = *plan.piece(p).path;
+    const double sign = gear_sign(plan.piece(p).gear);
+    if (!(path.length() > 2.0 * limits.spacing_m)) {
+      throw std::invalid_argument("CurvatureSpeedLimits: pieces[" + std::to_string(p) + "] is " +
+                                  std::to_string(path.length()) +
+                                  " m long; a piece between stops needs more than two grid "
+                                  "spacings (spacing_m)");
+    }
+    const double first = p == 0 ? limits.initial_speed_mps.value_or(limits.max_speed_mps) : 0.0;
+    const double last = stops ? 0.0 : std::numeric_limits<double>::infinity();
+    const std::vector<double> v = limited_speeds(path, limits, first, last);
+    const double ds = path.length() / static_cast<double>(v.size() - 1);
+    if (p == 0) {
+      knots->push_back({0.0, sign * v[0]});
+    } else {
+      knots->push_back({knots->back().time_s + limits.cusp_rest_s, 0.0});  // the gear change
+    }
+    append_knots(*knots, v, ds, sign);
+  }
+  SpeedProfile profile;
+  profile.signed_speeds = true;
+  profile.initial_speed_mps = knots->front().speed_mps;
+  profile.final_speed_mps = knots->back().speed_mps;
   profile.knots = std::move(knots);
   profile.validate();
   return profile;

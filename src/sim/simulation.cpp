@@ -9,6 +9,7 @@
 #include "plant_integration.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/sim/closed_loop_count.hpp"
+#include "smoothsteer/sim/gear_changes.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 
 namespace smoothsteer {
@@ -204,12 +205,21 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   return result;
 }
 
-SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator_parameters, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller, const TraceObserver& observer) {
+namespace {
+
+//! The closed loop on `path`, or on the pieces of `plan` (then `path` is its piece 0).
+SimulationResult closed_loop(const Path& path, const PathPlan* plan, const VehicleModel& vehicle,
+                             const ActuatorParameters& actuator_parameters,
+                             const SpeedProfile& speed, const SimulationParameters& parameters,
+                             const Pose2& start, SteeringController& controller,
+                             const TraceObserver& observer) {
   parameters.validate();
   speed.validate();
+  std::vector<GearChange> gear_switches;
+  if (plan) {
+    check_gear_changes(*plan, speed, parameters.control_period_s);
+    gear_switches = gear_changes(speed);
+  }
   detail::count_closed_loop();
   const VehicleParameters& car = vehicle.parameters();
   SteeringActuator actuator(actuator_parameters, parameters.substep_s);
@@ -224,6 +234,17 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
   VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
   vehicle.constrain(state, 0.0);
   controller.reset(0.0);
+  // The active piece of a plan (docs/cusps.md); a plain path is one forward piece.
+  std::size_t piece = 0;
+  const Path* active = &path;
+  double travel_offset = 0.0;  // + pi on a reverse piece: the heading error is the travel's
+  if (plan) {
+    if (controller.set_path(plan->piece(0).path) != Status::ok) {
+      throw std::invalid_argument(std::string(controller.name()) +
+                                  " does not support set_path(), which a PathPlan needs");
+    }
+    travel_offset = plan->piece(0).gear == Gear::reverse ? pi : 0.0;
+  }
   // Matched disturbance: into the controller's chain where it has one, else into the plant.
   const double plant_disturbance =
       parameters.plant_curvature_disturbance +
@@ -265,6 +286,22 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
 
   for (long k = 0; k <= steps; ++k) {
     const double t = static_cast<double>(k) * parameters.control_period_s;
+    if (piece < gear_switches.size() && t >= gear_switches[piece].stop_time_s - 1e-9) {
+      ++piece;  // at rest on the cusp: on to the next piece
+      active = plan->piece(piece).path.get();
+      travel_offset = plan->piece(piece).gear == Gear::reverse ? pi : 0.0;
+      rear_hint = {};
+      front_hint = {};
+      state.vx_mps = 0.0;  // the profile's exact 0 (the integration leaves rounding)
+      if (const Status status = controller.set_path(plan->piece(piece).path);
+          status != Status::ok) {
+        result.status = status;
+        result.stop_reason = "controller_error";
+        result.stop_detail = "at t = " + text(t) + " s set_path() of piece " +
+                             std::to_string(piece) + " returned " + to_string(status);
+        break;
+      }
+    }
     const Pose2 rear = rear_axle_pose(state, car);
     ControllerInput input{rear.position, rear.heading_rad, state.vx_mps, speed.acceleration(t),
                           parameters.control_period_s};
@@ -295,13 +332,14 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     sample.rear_axle = rear;
     sample.speed_mps = state.vx_mps;
     sample.acceleration_mps2 = input.acceleration_mps2;
-    const PathProjection rear_projection = path.project(rear.position, rear_hint);
+    const PathProjection rear_projection = active->project(rear.position, rear_hint);
     const PathProjection front_projection =
-        path.project(front_axle_position(state, car), front_hint);
+        active->project(front_axle_position(state, car), front_hint);
     sample.path_arc_length_m = rear_projection.arc_length_m;
     sample.path_curvature = rear_projection.curvature;
     sample.lateral_error_m = rear_projection.lateral_error_m;
-    sample.heading_error_rad = wrap_angle(rear.heading_rad - rear_projection.heading_rad);
+    sample.heading_error_rad =
+        wrap_angle(rear.heading_rad + travel_offset - rear_projection.heading_rad);
     sample.front_lateral_error_m = front_projection.lateral_error_m;
     sample.lead_lateral_error_m = output.diagnostics.lead_lateral_error_m;
     sample.measured_lateral_error_m = output.diagnostics.lateral_error_m;
@@ -336,8 +374,10 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     }
     observer(sample);
 
-    if (parameters.stop_at_path_end && !path.is_closed() &&
-        rear_projection.arc_length_m > path.length() + parameters.stop_beyond_path_end_m) {
+    const bool last_piece = !plan || piece + 1 == plan->piece_count();
+    if (parameters.stop_at_path_end && !active->is_closed() && last_piece &&
+        (rear_projection.arc_length_m > active->length() + parameters.stop_beyond_path_end_m ||
+         (plan && speed.knots->back().speed_mps == 0.0 && t >= speed.knots->back().time_s))) {
       result.stop_reason = "path_end";
       break;
     }
@@ -352,6 +392,36 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
     }
   }
   result.final_state = state;
+  return result;
+}
+
+}  // namespace
+
+SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer) {
+  return closed_loop(path, nullptr, vehicle, actuator, speed, parameters, start, controller,
+                     observer);
+}
+
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer) {
+  return closed_loop(*plan.piece(0).path, &plan, vehicle, actuator, speed, parameters, start,
+                     controller, observer);
+}
+
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller) {
+  std::vector<TraceSample> trace;
+  SimulationResult result =
+      simulate(plan, vehicle, actuator, speed, parameters, start, controller,
+               [&trace](const TraceSample& sample) { trace.push_back(sample); });
+  result.trace = std::move(trace);
   return result;
 }
 

@@ -6,8 +6,9 @@
 namespace smoothsteer {
 
 double side_slip_angle(const VehicleState& state) noexcept {
-  if (state.vx_mps == 0.0 && state.vy_mps == 0.0) return 0.0;
-  // atan(vy / vx) for vx > 0; atan2 keeps it finite at vx = 0.
+  // At rest (a cusp of a parking manoeuvre) the relaxing vy leaves no meaningful angle.
+  if (std::abs(state.vx_mps) < 1e-6) return 0.0;
+  // atan(vy / vx) for vx > 0, atan(vy / |vx|) in reverse.
   return std::atan2(state.vy_mps, std::abs(state.vx_mps));
 }
 

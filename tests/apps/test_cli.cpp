@@ -330,9 +330,14 @@ TEST_F(Cli, SummaryWritesCountsAsIntegersAndTheToolVersion) {
 // scenario file produces, byte for byte (the command runs from the repository root).
 TEST_F(Cli, CommittedSchedulesAreRegeneratedByTheCommandInTheirScenario) {
   int checked = 0;
-  for (const auto& entry : fs::directory_iterator(source_dir() / "scenarios")) {
-    if (entry.path().extension() != ".yaml") continue;
-    std::ifstream file(entry.path());
+  std::vector<fs::path> files;  // the scenarios and the road suite (parking_lot's schedule)
+  for (const char* folder : {"scenarios", "scenarios/roads"}) {
+    for (const auto& entry : fs::directory_iterator(source_dir() / folder)) {
+      if (entry.path().extension() == ".yaml") files.push_back(entry.path());
+    }
+  }
+  for (const fs::path& path : files) {
+    std::ifstream file(path);
     std::vector<std::string> arguments;
     bool in_command = false;
     for (std::string line; std::getline(file, line);) {
@@ -346,7 +351,7 @@ TEST_F(Cli, CommittedSchedulesAreRegeneratedByTheCommandInTheirScenario) {
       for (std::string word; words >> word;) arguments.push_back(word);
     }
     if (arguments.empty()) continue;
-    SCOPED_TRACE(entry.path().string());
+    SCOPED_TRACE(path.string());
     const auto out = std::find(arguments.begin(), arguments.end(), "--out");
     ASSERT_NE(out, arguments.end());
     const fs::path committed = source_dir() / *(out + 1);

@@ -17,6 +17,7 @@
 
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/runner/scenario.hpp"
+#include "smoothsteer/sim/gear_changes.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer::io {
@@ -40,28 +41,32 @@ TEST(RoadSuite, EveryRoadIsC1WithContinuousCurvatureAndClothoidsWithinTheGuideli
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.string());
     const Scenario scenario = load_scenario(file.string());
-    const Path& path = *scenario.path;
-    EXPECT_TRUE(path.curvature_jumps().empty());
     int clothoids = 0;
-    const auto& segments = path.segments();
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      const PathSegment& segment = segments[i];
-      if (i > 0) {  // position, heading and curvature continuous across the joint
-        const PathPoint before = segments[i - 1].evaluate_at(segments[i - 1].length);
-        const PathPoint after = segment.evaluate_at(0.0);
-        EXPECT_LT(norm(after.position - before.position), 1e-9) << "joint " << i;
-        EXPECT_LT(std::abs(wrap_angle(after.heading_rad - before.heading_rad)), 1e-9);
-        EXPECT_LT(std::abs(after.curvature - before.curvature), 1e-12) << "joint " << i;
+    // A path with gear changes (parking_lot): every piece of its plan.
+    const std::size_t pieces = scenario.plan ? scenario.plan->piece_count() : 1;
+    for (std::size_t p = 0; p < pieces; ++p) {
+      const Path& path = scenario.plan ? *scenario.plan->piece(p).path : *scenario.path;
+      EXPECT_TRUE(path.curvature_jumps().empty());
+      const auto& segments = path.segments();
+      for (std::size_t i = 0; i < segments.size(); ++i) {
+        const PathSegment& segment = segments[i];
+        if (i > 0) {  // position, heading and curvature continuous across the joint
+          const PathPoint before = segments[i - 1].evaluate_at(segments[i - 1].length);
+          const PathPoint after = segment.evaluate_at(0.0);
+          EXPECT_LT(norm(after.position - before.position), 1e-9) << "joint " << i;
+          EXPECT_LT(std::abs(wrap_angle(after.heading_rad - before.heading_rad)), 1e-9);
+          EXPECT_LT(std::abs(after.curvature - before.curvature), 1e-12) << "joint " << i;
+        }
+        if (segment.kind != PathSegment::Kind::clothoid) continue;
+        ++clothoids;
+        // RAL 2012 / RAA 2008: R / 3 <= A <= R, A^2 = L / |delta kappa|, R the tighter end.
+        const double parameter =
+            std::sqrt(segment.length / std::abs(segment.end_curvature() - segment.curvature));
+        const double radius =
+            1.0 / std::max(std::abs(segment.curvature), std::abs(segment.end_curvature()));
+        EXPECT_GE(parameter, radius / 3.0 - 1e-9) << "segment " << i;
+        EXPECT_LE(parameter, radius + 1e-9) << "segment " << i;
       }
-      if (segment.kind != PathSegment::Kind::clothoid) continue;
-      ++clothoids;
-      // RAL 2012 / RAA 2008: R / 3 <= A <= R, A^2 = L / |delta kappa|, R the tighter end.
-      const double parameter =
-          std::sqrt(segment.length / std::abs(segment.end_curvature() - segment.curvature));
-      const double radius =
-          1.0 / std::max(std::abs(segment.curvature), std::abs(segment.end_curvature()));
-      EXPECT_GE(parameter, radius / 3.0 - 1e-9) << "segment " << i;
-      EXPECT_LE(parameter, radius + 1e-9) << "segment " << i;
     }
     EXPECT_GE(clothoids, 2);
   }
@@ -72,7 +77,14 @@ TEST(RoadSuite, SpeedProfilesKeepTheirLimitsAndEveryRoadRunsToItsEnd) {
     SCOPED_TRACE(file.string());
     const Scenario scenario = load_scenario(file.string());
     const nlohmann::json& speed = scenario.parameters.at("speed");
-    if (speed.value("profile", "ramp") == "curvature") {
+    if (scenario.plan) {  // signed and at rest at each cusp (tests/sim/test_plan_simulation.cpp)
+      ASSERT_TRUE(scenario.speed.signed_speeds);
+      EXPECT_EQ(scenario.plan->cusp_count(), 2u);
+      EXPECT_EQ(gear_changes(scenario.speed).size(), 2u);
+      for (const SpeedKnot& knot : *scenario.speed.knots) {
+        EXPECT_LE(std::abs(knot.speed_mps), speed.at("max_mps").get<double>());
+      }
+    } else if (speed.value("profile", "ramp") == "curvature") {
       ASSERT_TRUE(scenario.speed.knots);
       const double v_max = speed.at("max_mps").get<double>();
       const double a_lat = speed.at("max_lateral_acceleration_mps2").get<double>();
@@ -100,6 +112,11 @@ TEST(RoadSuite, SpeedProfilesKeepTheirLimitsAndEveryRoadRunsToItsEnd) {
     EXPECT_EQ(result.simulation.status, Status::ok);
     EXPECT_FALSE(result.simulation.non_finite);
     EXPECT_EQ(result.simulation.stop_reason, "path_end");
+    if (scenario.plan) {  // ends on the plan's last piece, at rest near its end
+      const Pose2 end = result.simulation.trace.back().rear_axle;
+      EXPECT_LT(norm(end.position - scenario.plan->final_position()), 0.5);
+      EXPECT_NEAR(result.simulation.trace.back().speed_mps, 0.0, 1e-9);
+    }
     std::printf("%-24s max |e| rear %.3f m, RMS %.3f m\n", scenario.name.c_str(),
                 result.metrics.max_abs_rear_error_m, result.metrics.rms_rear_error_m);
   }
@@ -151,6 +168,29 @@ TEST_F(RoadErrors, ClothoidPiecesAreValidatedByKey) {
                   {"path.pieces[0].clothoid_parameter_m", "two full turns"});
   expect_contains(error_of("{clothoid_m: 5, end_curvature_per_m: 0.1, radius: 3}"),
                   {"path.pieces[0].radius"});
+}
+
+TEST_F(RoadErrors, GearKeysAreValidatedByKey) {
+  const std::string speed =
+      "{profile: curvature, max_mps: 1.5, max_lateral_acceleration_mps2: 1, "
+      "max_deceleration_mps2: 0.5}";
+  EXPECT_EQ(error_of("{line_m: 10}, {line_m: 6, gear: reverse}, {line_m: 5, gear: forward}", speed),
+            "");
+  EXPECT_EQ(error_of("{line_m: 10, gear: reverse}", speed), "");  // reversing throughout
+  expect_contains(error_of("{line_m: 10}, {line_m: 6, gear: neutral}", speed),
+                  {"path.pieces[1].gear", "neutral"});
+  expect_contains(error_of("{line_m: 10}, {line_m: 6, gear: reverse}"),
+                  {"speed.profile", "gear changes"});
+  expect_contains(error_of("{line_m: 10}, {line_m: 6, gear: reverse}",
+                           "{profile: curvature, max_mps: 1.5, max_lateral_acceleration_mps2: 1, "
+                           "cusp_rest_s: 0}"),
+                  {"speed.cusp_rest_s"});
+  expect_contains(error_of("{line_m: 10}, {line_m: 6, gear: reverse}",
+                           "{profile: curvature, max_mps: 1.5, max_lateral_acceleration_mps2: 1, "
+                           "cusp_rest_s: 0.005}"),
+                  {"speed.cusp_rest_s", "control period"});
+  expect_contains(error_of("{line_m: 10}, {line_m: 0.6, gear: reverse}", speed),
+                  {"speed.profile", "pieces[1]"});
 }
 
 TEST_F(RoadErrors, CurvatureSpeedProfileKeysAreValidated) {

@@ -42,10 +42,9 @@ const std::vector<ShippedCase> shipped_cases = {
     {"lane_change_19.yaml", 0.0, 0.28, 0.43},
     {"circle_sections.yaml", 8.0, 0.13, 0.19},
     // A rack misaligned by 0.01 rad and a plant curvature of 0.002 1/m from t = 0 at 15 m/s: the
-    // estimate of docs/feedforward.md section 7 leaves 1.9-2.0 cm at 10 s over noise seeds 1-7
-    // and 1-2 mm at the end. With the observer's model off by 20 % its biased side slip leaves
-    // 8-10 cm (docs/feedforward.md).
-    {"disturbances_15.yaml", 10.0, 0.025, 0.12},
+    // estimate of docs/feedforward.md section 7 leaves 1.6-3.7 mm from 10 s on over noise seeds
+    // 1-5. With the observer's model off by 20 % its biased side slip leaves 8-10 cm.
+    {"disturbances_15.yaml", 10.0, 0.01, 0.12},
 };
 
 struct RunFigures {
@@ -91,8 +90,10 @@ TEST(ShippedKineticScenarios, MeetTheirPinnedFiguresAtTheCarsActuator) {
 }
 
 TEST(ShippedKineticScenarios, SteeringOffsetAndPlantDisturbanceLeaveNoSteadyOffset) {
-  // Either sign, each alone: within 2.5 cm from 10 s on (without the estimate: 2.6 m).
-  const ShippedCase disturbed{"disturbances_15.yaml", 10.0, 0.025, 0.0};
+  // Either sign, each alone: within 2 cm from 10 s on (the rack alone 1.8-1.9 cm over noise
+  // seeds, the slower case: its smaller drift leaves the recovery to the certified near law);
+  // without the estimate 2.6 m.
+  const ShippedCase disturbed{"disturbances_15.yaml", 10.0, 0.02, 0.0};
   const std::vector<std::vector<std::string>> variants = {
       {"simulation.steering_offset_rad=-0.01", "simulation.plant_curvature_disturbance=-0.002"},
       {"simulation.plant_curvature_disturbance=0"},

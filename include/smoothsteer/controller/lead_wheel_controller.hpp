@@ -127,8 +127,20 @@ class LeadWheelController final : public SteeringController {
   double disturbance_estimate_ = 0.0;  //!< kappa_d estimate [1/m]
   Vec2 previous_position_{};           //!< rear axle at the last update()
   double previous_course_ = 0.0;       //!< psi + beta_r at the last update()
-  bool has_previous_pose_ = false;     //!< how far ahead the feedforward reads the path [m]
-  TargetCurve target_;                 //!< target curve of the current period
+  //! The path's curvature at the rear axle at the last two update()s, and how far the car has
+  //! driven since it last moved faster than steady_lateral_jerk_mps3 allows [m].
+  double rear_path_curvature_ = 0.0;
+  double previous_rear_path_curvature_ = 0.0;
+  double steady_path_m_ = 0.0;
+  //! The disturbance estimate learns once the path's curvature has stayed steady (lateral jerk
+  //! v^3 |d kappa / ds| below 0.1 m/s^3, a fifth of the road-design comfort limit) for the
+  //! settling distance max(5 m, 0.5 s v) and then as much again: the slip and actuator lags the
+  //! model leaves have died out by then.
+  static constexpr double steady_lateral_jerk_mps3 = 0.1;
+  static constexpr double min_settling_m = 5.0;
+  static constexpr double settling_time_s = 0.5;
+  bool has_previous_pose_ = false;  //!< how far ahead the feedforward reads the path [m]
+  TargetCurve target_;              //!< target curve of the current period
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
   double chain_reach_ = 0.0;  //!< sum lambda_i: how far ahead of the rear axle the lead wheel is

@@ -15,8 +15,10 @@ namespace smoothsteer {
 //! Benchmark 2: for each scenario file (lane_change_{10,15,19}.yaml) and every controller:
 //! max |e|, std of the steering rate, max steering acceleration, limit hits of the saturation.
 //! `paper` supplies the paper_max_e_m column (table "lane_change", case = speed with 1 decimal).
+//! `overrides` go to every scenario (e.g. "model=double_track": the held-out plant).
 ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario_files,
-                                        const PaperFigures& paper = {});
+                                        const PaperFigures& paper = {},
+                                        const std::vector<std::string>& overrides = {});
 
 //! Benchmark 3: circle_sections.yaml with the paper's base setting and the three variations of
 //! Sec. IV-A (k_rob, kbar_l and lambda_l changed one at a time).

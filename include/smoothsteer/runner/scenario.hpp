@@ -16,6 +16,7 @@
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_plan.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/double_track.hpp"
@@ -34,8 +35,10 @@ struct Scenario {
   SpeedProfile speed;
   SimulationParameters simulation;
   MetricsParameters metrics;
-  Pose2 start;  //!< rear-axle start pose
-  std::shared_ptr<const Path> path;
+  Pose2 start;                       //!< rear-axle start pose
+  std::shared_ptr<const Path> path;  //!< the path; with gear changes, the plan's piece 0
+  //! A `segments` path with gear changes (`gear: reverse`, docs/cusps.md), else null.
+  std::shared_ptr<const PathPlan> plan;
   YAML::Node controller;               //!< the controller section (type + parameters)
   std::vector<std::string> overrides;  //!< the --set overrides applied
   nlohmann::json parameters;           //!< full resolved parameter set (defaults filled in)
@@ -51,8 +54,11 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
 Scenario load_scenario(const std::string& file, const std::vector<std::string>& overrides = {});
 
 //! Builds the path of a `path:` section (used by load_scenario; public for tests and tools).
+//! A `segments` path with gear changes also sets *plan (and returns its piece 0); without
+//! `plan` a gear change is rejected with a message naming the piece's `gear` key.
 std::shared_ptr<const Path> make_path(ConfigSection& path_section,
-                                      const std::string& base_directory);
+                                      const std::string& base_directory,
+                                      std::shared_ptr<const PathPlan>* plan = nullptr);
 
 std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& scenario);
 //! Builds the scenario's controller through the registry.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_plan.hpp"
 #include "smoothsteer/sim/speed_profile.hpp"
 #include "smoothsteer/validation.hpp"
 
@@ -26,6 +27,9 @@ struct CurvatureSpeedLimits {
   //! Speed at s = 0 [m/s]; empty: the limit there. Clamped to the limit there.
   std::optional<double> initial_speed_mps;
   double spacing_m = 0.5;  //!< grid of the passes [m]
+  //! On a PathPlan: how long the car stands at each cusp before it moves off in the other gear
+  //! [s] (the gear change; the steering may settle meanwhile).
+  double cusp_rest_s = 1.0;
 
   std::optional<Violation> first_violation() const noexcept;
   bool is_valid() const noexcept { return !first_violation(); }
@@ -41,5 +45,12 @@ std::vector<double> curvature_limited_speeds(const Path& path, const CurvatureSp
 
 //! The same as a time table: knots at the grid points, speed linear in time between them.
 SpeedProfile curvature_speed_profile(const Path& path, const CurvatureSpeedLimits& limits);
+
+//! A signed profile for a path with gear changes: on each piece the limits above, from rest
+//! (after a cusp; piece 0 from initial_speed_mps or its limit) to rest (at every cusp and at the
+//! plan's end), signed by the piece's gear, with a rest of cusp_rest_s at every cusp
+//! (SpeedProfile::signed_speeds; simulate() on the plan switches pieces there). Throws
+//! std::invalid_argument naming the piece if one is not longer than two grid spacings.
+SpeedProfile curvature_speed_profile(const PathPlan& plan, const CurvatureSpeedLimits& limits);
 
 }  // namespace smoothsteer

@@ -17,6 +17,7 @@
 
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_plan.hpp"
 #include "smoothsteer/sim/speed_profile.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "smoothsteer/vehicle/steering_actuator.hpp"
@@ -180,5 +181,22 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
                           SteeringController& controller, const TraceObserver& observer);
+
+//! A path with gear changes (path_plan.hpp, docs/cusps.md) driven by a signed tabulated speed
+//! profile (SpeedProfile::signed_speeds) that comes to rest at every cusp
+//! (check_gear_changes(), gear_changes.hpp, throws std::invalid_argument otherwise). The
+//! controller starts on piece 0 and gets the next piece by set_path() at the first control
+//! instant of each rest, where the plant's vx is set to the profile's exact 0; errors and
+//! metrics refer to the active piece, the heading error to the direction of travel. The run
+//! ends at the end of the last piece or once the profile has come to its final rest.
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer);
+//! The same, storing the trace in the result.
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller);
 
 }  // namespace smoothsteer

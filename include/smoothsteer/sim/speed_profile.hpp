@@ -32,6 +32,9 @@ struct SpeedProfile {
   //! ramp: speed linear in time between knots (constant acceleration), the last speed after the
   //! last knot. initial_speed_mps must equal the first knot's speed.
   std::shared_ptr<const std::vector<SpeedKnot>> knots{};
+  //! Tabulated profiles only: the knots' speeds are signed (negative: reversing), in
+  //! [-100, 100], for a path with gear changes (simulate() on a PathPlan, path_plan.hpp).
+  bool signed_speeds = false;
 
   //! Duration of the ramp [s] (0 for a constant or tabulated profile).
   double ramp_duration_s() const noexcept {
@@ -84,11 +87,22 @@ struct SpeedProfile {
                   double reference = std::numeric_limits<double>::quiet_NaN()) {
       return Violation{"SpeedProfile", "", field, value, rule, reference};
     };
-    if (!std::isfinite(initial_speed_mps) || initial_speed_mps <= 0.0 ||
-        initial_speed_mps > 100.0) {
+    if (signed_speeds && !knots) {
+      return bad("signed_speeds", 1.0, "needs a tabulated profile (knots)");
+    }
+    const bool reverse_ok = signed_speeds;
+    if (reverse_ok && !(std::abs(initial_speed_mps) <= 100.0)) {
+      return bad("initial_speed_mps", initial_speed_mps, "must be in [-100, 100] (signed_speeds)");
+    }
+    if (!reverse_ok && (!std::isfinite(initial_speed_mps) || initial_speed_mps <= 0.0 ||
+                        initial_speed_mps > 100.0)) {
       return bad("initial_speed_mps", initial_speed_mps, "must be in (0, 100] (forward driving)");
     }
-    if (!std::isfinite(final_speed_mps) || final_speed_mps <= 0.0 || final_speed_mps > 100.0) {
+    if (reverse_ok && !(std::abs(final_speed_mps) <= 100.0)) {
+      return bad("final_speed_mps", final_speed_mps, "must be in [-100, 100] (signed_speeds)");
+    }
+    if (!reverse_ok &&
+        (!std::isfinite(final_speed_mps) || final_speed_mps <= 0.0 || final_speed_mps > 100.0)) {
       return bad("final_speed_mps", final_speed_mps, "must be in (0, 100] (forward driving)");
     }
     if (!std::isfinite(acceleration_mps2) || acceleration_mps2 < 0.0 || acceleration_mps2 > 20.0) {
@@ -106,7 +120,12 @@ struct SpeedProfile {
                    initial_speed_mps);
       }
       for (std::size_t i = 0; i < k.size(); ++i) {
-        if (!std::isfinite(k[i].speed_mps) || k[i].speed_mps <= 0.0 || k[i].speed_mps > 100.0) {
+        if (reverse_ok && !(std::abs(k[i].speed_mps) <= 100.0)) {
+          return bad("knots[i].speed_mps", k[i].speed_mps,
+                     "must be in [-100, 100] (signed_speeds) at knot i =", static_cast<double>(i));
+        }
+        if (!reverse_ok &&
+            (!std::isfinite(k[i].speed_mps) || k[i].speed_mps <= 0.0 || k[i].speed_mps > 100.0)) {
           return bad("knots[i].speed_mps", k[i].speed_mps,
                      "must be in (0, 100] at knot i =", static_cast<double>(i));
         }

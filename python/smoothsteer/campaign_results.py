@@ -1,0 +1,113 @@
+"""The results of a campaign on disk (docs/campaigns.md): DIR/results.csv, one row per case
+appended as its batch finishes, and DIR/campaign.json, what the rows depend on.
+
+Rows are written whole and flushed after every batch, so a killed campaign leaves at most one
+cut line at the end; the next run removes it, keeps every complete row and runs only the cases
+that have none. A directory holding another campaign's rows (another base file, seed,
+distributions, metrics or criteria) is refused; more cases than before extend the campaign."""
+import csv
+import fcntl
+import io
+import json
+import os
+
+from .campaign_cases import cell, columns
+from .campaign_yaml import CampaignSpecError
+
+RESULTS = "results.csv"
+METADATA = "campaign.json"
+
+
+class ResultFile:
+    """results.csv of one campaign, opened for appending; `done` is the set of cases it has."""
+
+    def __init__(self, out, spec):
+        os.makedirs(out, exist_ok=True)
+        self.out, self.path = out, os.path.join(out, RESULTS)
+        self.columns = columns(spec)
+        self._check_metadata(spec)
+        self.done = set()
+        exists = os.path.exists(self.path)
+        self.handle = open(self.path, "a+", newline="", encoding="utf-8")
+        try:
+            fcntl.flock(self.handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            self.handle.close()
+            raise CampaignSpecError(f"{out}: another campaign is writing to this directory") \
+                from None
+        if exists and os.path.getsize(self.path) > 0:
+            self._recover()
+        else:
+            self._append([self.columns])
+        self.recovered = len(self.done)
+
+    def _check_metadata(self, spec):
+        path = os.path.join(self.out, METADATA)
+        identity = spec.identity()
+        if os.path.exists(path):
+            with open(path, encoding="utf-8") as handle:
+                previous = json.load(handle)
+            if previous.get("identity") != identity:
+                raise CampaignSpecError(
+                    f"{self.out}: holds the rows of another campaign ({previous.get('spec')}, "
+                    f"{previous.get('name')}): its base file, seed, overrides, variables, "
+                    "metrics or criteria differ; give another --out")
+        metadata = {"name": spec.name, "spec": spec.file, "base": spec.base, "seed": spec.seed,
+                    "cases": spec.cases, "identity": identity, "columns": self.columns}
+        temporary = path + ".tmp"
+        with open(temporary, "w", encoding="utf-8") as handle:
+            json.dump(metadata, handle, indent=1)
+        os.replace(temporary, path)
+
+    def _recover(self):
+        self.handle.seek(0)
+        text = self.handle.read()
+        end = text.rfind("\n") + 1
+        if end < len(text):  # a row cut by a kill: drop it, its case runs again
+            self.handle.truncate(len(text[:end].encode("utf-8")))
+            text = text[:end]
+        rows = list(csv.reader(io.StringIO(text)))
+        if not rows:  # killed while writing the header
+            self.handle.seek(0, os.SEEK_END)
+            self._append([self.columns])
+            return
+        if rows[0] != self.columns:
+            raise CampaignSpecError(f"{self.path}: its columns are not this campaign's "
+                                    f"({', '.join(self.columns)}); give another --out")
+        for number, row in enumerate(rows[1:], start=2):
+            if len(row) != len(self.columns):
+                raise CampaignSpecError(f"{self.path}: line {number} has {len(row)} fields, "
+                                        f"not {len(self.columns)}")
+            self.done.add(int(row[0]))
+        self.handle.seek(0, os.SEEK_END)
+
+    def _append(self, rows):
+        buffer = io.StringIO()
+        csv.writer(buffer, lineterminator="\n").writerows(rows)
+        self.handle.write(buffer.getvalue())
+        self.handle.flush()
+
+    def write(self, rows):
+        """Appends the rows of cases not yet in the file (a case is never written twice)."""
+        fresh = [row for row in rows if row["case"] not in self.done]
+        self._append([[cell(row.get(name)) for name in self.columns] for row in fresh])
+        self.done.update(row["case"] for row in fresh)
+        return len(fresh)
+
+    def close(self):
+        if not self.handle.closed:
+            self.handle.flush()
+            os.fsync(self.handle.fileno())
+            self.handle.close()
+
+
+def read_rows(out, spec):
+    """The rows of DIR/results.csv for cases 0 .. spec.cases - 1, sorted by case (pandas)."""
+    import pandas as pd
+
+    frame = pd.read_csv(os.path.join(out, RESULTS), keep_default_na=False, na_values=[""],
+                        float_precision="round_trip",
+                        dtype={"error_kind": str, "error": str, "status": str,
+                               "overrides": str, "stop_reason": str, "sim_status": str})
+    frame = frame[frame["case"] < spec.cases]
+    return frame.sort_values("case").reset_index(drop=True)

@@ -1,0 +1,280 @@
+#include "smoothsteer/evaluation/road_suite_comparison.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "scenario_setup.hpp"
+#include "smoothsteer/baselines/comparison_controllers.hpp"
+#include "smoothsteer/runner/scenario.hpp"
+
+namespace smoothsteer {
+namespace {
+
+constexpr const char* certified = "certified";
+
+struct Case {
+  std::string road_file, vehicle_file, model, controller;
+};
+
+struct Outcome {
+  std::string road, car, model, controller, stop;
+  double max_e = 0.0, rms_e = 0.0, max_heading = 0.0, max_slip = 0.0;
+  long above = 0;
+  bool wide = false, spun = false;
+};
+
+std::string stem(const std::string& file) {
+  return std::filesystem::path(file).stem().string();
+}
+
+void write_trace(const std::string& file, const std::vector<TraceSample>& trace) {
+  std::filesystem::create_directories(std::filesystem::path(file).parent_path());
+  std::ofstream out(file, std::ios::binary);
+  out << "t,s,x,y,e,delta_cmd\n";
+  char line[160];
+  for (const TraceSample& r : trace) {
+    std::snprintf(line, sizeof line, "%.3f,%.4f,%.4f,%.4f,%.5f,%.5f\n", r.time_s, r.distance_m,
+                  r.rear_axle.position.x, r.rear_axle.position.y, r.lateral_error_m,
+                  r.steering_command_rad);
+    out << line;
+  }
+  if (!out) throw std::runtime_error("road suite: writing " + file + " failed");
+}
+
+//! The certified route is the car's own: a road's `schedule: .../passenger_car_<X>.csv` becomes
+//! `.../<car>_<X>.csv` (the same `smoothsteer tune` command with the car's file), which must exist.
+std::vector<std::string> car_schedule(const Case& c, const std::string& car) {
+  const io::Scenario road = io::load_scenario(c.road_file);
+  const YAML::Node schedule = road.controller["schedule"];
+  if (!schedule || !schedule.IsScalar()) return {};
+  const std::filesystem::path given(schedule.Scalar());
+  const std::string name = given.filename().string();
+  const std::string prefix = "passenger_car_";
+  if (name.rfind(prefix, 0) != 0) return {};
+  const std::filesystem::path own = given.parent_path() / (car + "_" + name.substr(prefix.size()));
+  const std::filesystem::path resolved =
+      own.is_relative() ? std::filesystem::path(c.road_file).parent_path() / own : own;
+  if (!std::filesystem::is_regular_file(resolved)) {
+    throw std::invalid_argument(c.road_file + ": the certified route of " + car + " needs " +
+                                resolved.string() + " (smoothsteer tune with vehicles/" + car +
+                                ".yaml, as the road's schedule was made)");
+  }
+  return {"controller.schedule=" + own.string()};
+}
+
+//! The road's path (every piece of a plan) as x,y rows every 0.25 m, beside the traces; written
+//! to a file of its own and renamed, so that runs of the same road in parallel cannot mix it.
+void write_path(const std::string& directory, const io::Scenario& scenario, std::size_t id) {
+  std::filesystem::create_directories(directory);
+  const std::string file = directory + "/path.csv";
+  const std::string part = file + "." + std::to_string(id);
+  {
+    std::ofstream out(part, std::ios::binary);
+    out << "x,y\n";
+    const std::size_t pieces = scenario.plan ? scenario.plan->piece_count() : 1;
+    char line[64];
+    for (std::size_t p = 0; p < pieces; ++p) {
+      const Path& path = scenario.plan ? *scenario.plan->piece(p).path : *scenario.path;
+      const double count = std::ceil(path.length() / 0.25);
+      for (double i = 0.0; i <= count; i += 1.0) {
+        const Vec2 at = path.evaluate(path.length() * i / count).position;
+        std::snprintf(line, sizeof line, "%.4f,%.4f\n", at.x, at.y);
+        out << line;
+      }
+    }
+    if (!out) throw std::runtime_error("road suite: writing " + part + " failed");
+  }
+  std::filesystem::rename(part, file);
+}
+
+Outcome run_case(const Case& c, const std::string& trace_directory, std::size_t id) {
+  const std::string vehicle = std::filesystem::absolute(c.vehicle_file).string();
+  std::vector<std::string> overrides{"vehicle.file=" + vehicle, "model=" + c.model};
+  if (c.controller == certified) {
+    for (std::string& o : car_schedule(c, stem(c.vehicle_file))) overrides.push_back(o);
+  }
+  const io::Scenario scenario = io::load_scenario(c.road_file, overrides);
+  io::RunResult run;
+  if (c.controller == certified) {
+    run = io::run_scenario(scenario);
+  } else {
+    auto controller =
+        make_comparison_controller(c.controller, detail::comparison_setup_for(scenario));
+    run = io::run_scenario(scenario, *controller);
+  }
+  Outcome o;
+  o.road = scenario.name;
+  o.car = stem(c.vehicle_file);
+  o.model = c.model;
+  o.controller = c.controller;
+  o.stop = run.simulation.stop_reason;
+  const Metrics& m = run.metrics;
+  o.max_e = m.max_abs_rear_error_m;
+  o.rms_e = m.rms_rear_error_m;
+  o.above = static_cast<long>(m.angle_violations) + m.held_rate_violations +
+            m.held_acceleration_violations;
+  for (const TraceSample& r : run.simulation.trace) {
+    o.max_heading = std::max(o.max_heading, std::abs(r.heading_error_rad));
+    o.max_slip = std::max(o.max_slip, std::abs(r.rear_side_slip_rad));
+  }
+  o.wide = !(o.max_e <= road_suite_wide_error_m);
+  o.spun = o.max_heading > road_suite_spin_heading_error_rad ||
+           o.max_slip > road_suite_spin_side_slip_rad || run.simulation.non_finite;
+  if (!trace_directory.empty()) {
+    write_path(trace_directory + "/" + o.road, scenario, id);
+    write_trace(
+        trace_directory + "/" + o.road + "/" + o.car + "_" + o.model + "_" + o.controller + ".csv",
+        run.simulation.trace);
+  }
+  return o;
+}
+
+std::string plant_name(const std::string& model) {
+  return model == "double_track" ? "double-track" : model == "dynamic" ? "single-track" : model;
+}
+
+}  // namespace
+
+std::vector<std::string> road_suite_controller_names() {
+  std::vector<std::string> names{certified};
+  for (const std::string& name : comparison_controller_names()) names.push_back(name);
+  return names;
+}
+
+void RoadSuiteOptions::validate() const {
+  if (road_files.empty()) throw std::invalid_argument("RoadSuiteOptions: road_files is empty");
+  if (vehicle_files.empty()) {
+    throw std::invalid_argument("RoadSuiteOptions: vehicle_files is empty");
+  }
+  if (models.empty()) throw std::invalid_argument("RoadSuiteOptions: models is empty");
+  for (const std::string& model : models) {
+    if (model != "dynamic" && model != "double_track" && model != "kinematic") {
+      throw std::invalid_argument("RoadSuiteOptions: models contains '" + model +
+                                  "'; expected dynamic, double_track or kinematic");
+    }
+  }
+  if (controllers.empty()) throw std::invalid_argument("RoadSuiteOptions: controllers is empty");
+  const std::vector<std::string> known = road_suite_controller_names();
+  for (const std::string& name : controllers) {
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      throw std::invalid_argument("RoadSuiteOptions: controllers contains '" + name +
+                                  "', which is neither 'certified' nor a comparison controller");
+    }
+  }
+  if (threads < 1 || threads > 256) {
+    throw std::invalid_argument("RoadSuiteOptions: threads = " + std::to_string(threads) +
+                                " must be in [1, 256]");
+  }
+}
+
+RoadSuiteResult run_road_suite_comparison(const RoadSuiteOptions& options) {
+  options.validate();
+  std::vector<Case> cases;
+  for (const std::string& road : options.road_files) {
+    for (const std::string& vehicle : options.vehicle_files) {
+      for (const std::string& model : options.models) {
+        for (const std::string& controller : options.controllers) {
+          cases.push_back({road, vehicle, model, controller});
+        }
+      }
+    }
+  }
+  std::vector<Outcome> outcomes(cases.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex failure_mutex;
+  std::string failure;
+  auto work = [&] {
+    for (std::size_t i = next++; i < cases.size(); i = next++) {
+      try {
+        outcomes[i] = run_case(cases[i], options.trace_directory, i);
+      } catch (const std::exception& error) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (failure.empty()) failure = error.what();
+      }
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int t = 1; t < options.threads; ++t) workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers) worker.join();
+  if (!failure.empty()) throw std::runtime_error("road suite: " + failure);
+
+  RoadSuiteResult result;
+  ResultsTable& runs = result.runs;
+  runs.title = "Road suite x cars x plants x controllers (rear axle, the whole run)";
+  runs.header = {
+      "road", "car",  "plant", "controller", "max_abs_e_m", "rms_e_m", "held_above_limits",
+      "wide", "spun", "stop"};
+  // Per plant and controller: runs, wide, spun, held above, worst and mean max |e|, best-of.
+  struct Totals {
+    int runs = 0, wide = 0, spun = 0, best = 0;
+    long above = 0;
+    double worst = 0.0, sum_max = 0.0, sum_rms = 0.0;
+  };
+  std::map<std::pair<std::string, std::string>, Totals> totals;
+  std::map<std::string, std::pair<double, std::string>> best;  // road|car|model -> best
+  for (const Outcome& o : outcomes) {
+    runs.rows.push_back({o.road, o.car, plant_name(o.model), o.controller,
+                         ResultsTable::number(o.max_e), ResultsTable::number(o.rms_e),
+                         std::to_string(o.above), o.wide ? "wide" : "", o.spun ? "spun" : "",
+                         o.stop});
+    Totals& t = totals[{o.model, o.controller}];
+    ++t.runs;
+    t.wide += o.wide ? 1 : 0;
+    t.spun += o.spun ? 1 : 0;
+    t.above += o.above;
+    t.worst = std::max(t.worst, o.max_e);
+    t.sum_max += o.max_e;
+    t.sum_rms += o.rms_e;
+    const std::string key = o.road + "|" + o.car + "|" + o.model;
+    const auto found = best.find(key);
+    if (found == best.end() || o.max_e < found->second.first) best[key] = {o.max_e, o.controller};
+  }
+  for (const auto& [key, value] : best) {
+    const std::string model = key.substr(key.rfind('|') + 1);
+    ++totals[{model, value.second}].best;
+  }
+  runs.notes = {
+      "max_abs_e_m, rms_e_m: the rear axle's lateral error over the whole run (on a path with "
+      "gear changes, against the active piece). held_above_limits: held-command samples above "
+      "the car's angle, rate or acceleration limit. wide: max |e| > 1 m; spun: |heading error| "
+      "> 1 rad or |rear-axle side slip| > 0.5 rad (the rear axle slides; at parking speed the CG's "
+      "kinematic slip atan(lr tan(delta) / L) reaches 0.6 rad without any sliding). stop: path_end "
+      "(the run reached the end of its path) or "
+      "duration. certified: the road file's own controller (the scheduled lead-wheel controller "
+      "with the governor and the schedule `smoothsteer tune` gives for that car, "
+      "schedules/<car>_*.csv); every other row is a baseline behind the second-order limiter "
+      "(docs/baselines.md). Cars: vehicles/*.yaml (CommonRoad vehicles 1-3); plants: the "
+      "single-track model (model: dynamic) and the held-out double-track model."};
+
+  ResultsTable& summary = result.summary;
+  summary.title = "Road suite: totals per plant and controller over every road and car";
+  summary.header = {"plant",      "controller",    "runs",         "wide",         "spun",
+                    "held_above", "worst_max_e_m", "mean_max_e_m", "mean_rms_e_m", "best_of"};
+  for (const std::string& model : options.models) {
+    for (const std::string& controller : options.controllers) {
+      const Totals& t = totals[{model, controller}];
+      const double n = std::max(1, t.runs);
+      summary.rows.push_back({plant_name(model), controller, std::to_string(t.runs),
+                              std::to_string(t.wide), std::to_string(t.spun),
+                              std::to_string(t.above), ResultsTable::number(t.worst),
+                              ResultsTable::number(t.sum_max / n),
+                              ResultsTable::number(t.sum_rms / n), std::to_string(t.best)});
+    }
+  }
+  summary.notes = {
+      "Over every road and car of road_suite.md: wide and spun runs, held samples above the "
+      "limits, the worst and the mean of the runs' max |e|, the mean RMS |e|, and best_of: on how "
+      "many road x car pairs of that plant the controller had the smallest max |e|."};
+  return result;
+}
+
+}  // namespace smoothsteer
