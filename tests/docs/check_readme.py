@@ -99,6 +99,22 @@ def check_comparison(readme, root, errors):
             errors.append(f"README.md: the reaching ratio range ({label}) does not match "
                           f"roc_vx.md {column} {min(values)}-{max(values)}")
         checked += 2
+    summary = markdown_table((root / "docs/results/road_suite_summary.md").read_text(),
+                             "| plant | controller")
+    columns = summary[0]
+    totals = {r[columns.index("controller")]: dict(zip(columns, r)) for r in summary[1:]
+              if r[columns.index("plant")] == "single-track"}
+    for controller, pattern in (
+            ("stanley", r"Stanley held to the\s+same limits.*?on (\d+) of the 21.*?"
+                        r"mean max \|e\| of (\d+\.\d+) m"),
+            ("certified", r"the certified route on (\d+) of 21.*?with\s+(\d+\.\d+) m")):
+        match = re.search(pattern, compares, re.S)
+        row = totals.get(controller)
+        if not match or row is None or match.group(1) != row["best_of"] or \
+                not same(match.group(2), row["mean_max_e_m"]):
+            errors.append(f"README.md: the road-suite figures of {controller} do not match "
+                          f"road_suite_summary.md")
+        checked += 2
     return checked
 
 
