@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Example 5: delay compensation. The 15 m/s lane change with 50 ms of dead time in front of the
 // steering actuator, once without and once with the controller's delay compensation
 // (ControllerParameters::actuator_delay_s, a Smith predictor on the kinematic model).
-#include <smoothsteer/io/scenario.hpp>
+#include <smoothsteer/runner/scenario.hpp>
 
 #include <cstdio>
 #include <string>

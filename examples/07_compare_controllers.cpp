@@ -3,7 +3,7 @@
 // actuator. `smoothsteer compare lane-change` makes the full table (docs/results/).
 #include <smoothsteer/baselines/comparison_controllers.hpp>
 #include <smoothsteer/evaluation/controller_registration.hpp>
-#include <smoothsteer/io/scenario.hpp>
+#include <smoothsteer/runner/scenario.hpp>
 
 #include <cstdio>
 #include <string>

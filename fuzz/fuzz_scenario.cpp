@@ -1,7 +1,7 @@
 // libFuzzer target: the scenario loader (YAML text -> validated Scenario, path and controller).
 #include "fuzz_support.hpp"
 #include "smoothsteer/evaluation/controller_registration.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const bool registered = (smoothsteer::register_comparison_controllers(), true);

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "fuzz_support.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace smoothsteer;

@@ -1,8 +1,8 @@
 // libFuzzer target: the vehicle loaders, for `tune` (load_vehicle_limits) and through a
 // scenario's `vehicle: {file: ...}`.
 #include "fuzz_support.hpp"
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace smoothsteer;

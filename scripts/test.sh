@@ -4,7 +4,8 @@
 #   2. the full suite (ci preset: Release, -Werror), with the Python module and its pytest suite
 #      (python/tests) and every example (examples/, C++ and Python),
 #   3. a consumer project built against the installed package (find_package(smoothsteer)), with
-#      the core and the tuning module,
+#      the core, the tuning module and io; it also checks that every installed module declares
+#      PUBLIC what its installed headers include,
 #   4. the standard-library core alone (-DSMOOTHSTEER_CORE_ONLY=ON: no yaml-cpp, Ipopt, Eigen,
 #      Boost),
 #   5. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow

@@ -1,5 +1,5 @@
-// `smoothsteer compare <benchmark>`: runs one comparison benchmark (issue 9) and writes its
-// table as CSV and Markdown into --out (default compare_out/, untracked). The committed tables
+// `smoothsteer compare <benchmark>`: runs one comparison benchmark (docs/baselines.md) and writes
+// its table as CSV and Markdown into --out (default compare_out/, untracked). The committed tables
 // in docs/results/ come from `--out docs/results` (docs/results/README.md); they are the same on
 // every rerun, since wall-clock times go to a separate *_timings file, which is not committed.
 //   roc           Tab. roc_vx: optimal (Ipopt) vs proposed (n = 1) vs HOSM reaching distance

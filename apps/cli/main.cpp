@@ -8,7 +8,7 @@
 
 #include "commands.hpp"
 #include "smoothsteer/evaluation/controller_registration.hpp"
-#include "smoothsteer/io/run_output.hpp"
+#include "smoothsteer/runner/run_output.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"smoothsteer: n-smooth, differentially bounded path-tracking control"};

@@ -1,5 +1,6 @@
 #pragma once
-//! `--plot`: runs scripts/plot_trace.py on a written trace, without a shell (issue 12, defect 1).
+//! `--plot`: runs scripts/plot_trace.py on a written trace, without a shell (a path pasted into a
+//! shell command line can run commands).
 
 #include <string>
 

@@ -12,9 +12,9 @@
 #include "commands.hpp"
 #include "plotter.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
-#include "smoothsteer/io/run_output.hpp"
-#include "smoothsteer/io/scenario.hpp"
-#include "smoothsteer/io/sweep.hpp"
+#include "smoothsteer/runner/run_output.hpp"
+#include "smoothsteer/runner/scenario.hpp"
+#include "smoothsteer/runner/sweep.hpp"
 
 namespace smoothsteer::cli {
 namespace {

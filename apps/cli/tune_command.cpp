@@ -13,8 +13,8 @@
 #include "commands.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/io/config_section.hpp"
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/path_demand.hpp"
 
@@ -47,7 +47,7 @@ std::vector<double> parse_speeds(const std::string& text) {
                                 "' must be FIRST:LAST:STEP in m/s, e.g. 1:30:0.5");
   }
   // Count before building the grid: 1:1e300:1e-300 would convert inf to an integer
-  // (issue 12, defect 7).
+  // (converting inf to an integer is undefined behaviour).
   if (!std::isfinite(first) || !std::isfinite(last) || !std::isfinite(step) || !(step > 0.0)) {
     throw std::invalid_argument("--speeds '" + text + "': FIRST, LAST and STEP must be finite, " +
                                 "STEP > 0");

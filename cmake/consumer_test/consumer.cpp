@@ -1,8 +1,12 @@
 // Uses the installed headers and libraries the way the README's ten lines do: certified
 // parameters for a car from the tuning module, then a closed loop onto a circle that must
-// converge with the steering rate within the car's limit.
+// converge with the steering rate within the car's limit; then a gain schedule written and read
+// back through io's schedule files.
+#include <smoothsteer/io/schedule_files.hpp>
 #include <smoothsteer/smoothsteer.hpp>
 #include <smoothsteer/tuning/gain_schedule.hpp>
+
+#include <filesystem>
 
 #include <cmath>
 #include <cstdio>
@@ -33,5 +37,16 @@ int main() {
       within && result.status == Status::ok && std::abs(result.final_lateral_error_m) < 0.01;
   std::printf("consumer: final |e| = %.5f m -> %s\n", std::abs(result.final_lateral_error_m),
               converged ? "ok" : "FAILED");
-  return converged ? 0 : 1;
+  // The schedule CSV round trip: io's header exposes tuning's GainSchedule.
+  const GainSchedule schedule = compute_feedforward_schedule(car, route, {5.0, 10.0, 15.0});
+  const std::string csv =
+      (std::filesystem::temp_directory_path() / "smoothsteer_consumer_schedule.csv").string();
+  io::write_schedule_csv(schedule, csv);
+  const GainSchedule read = io::read_schedule_csv(csv);
+  std::filesystem::remove(csv);
+  const bool same = read.entries().size() == 3 &&
+                    std::abs(read.parameters_at(10.0).lead_curvature_bound -
+                             schedule.parameters_at(10.0).lead_curvature_bound) < 1e-9;
+  std::printf("consumer: schedule CSV round trip -> %s\n", same ? "ok" : "FAILED");
+  return converged && same ? 0 : 1;
 }

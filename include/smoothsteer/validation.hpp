@@ -1,8 +1,8 @@
 #pragma once
 //! \file validation.hpp
-//! One validation shape for every parameter struct (issue 12): the struct states its rules once,
-//! in `first_violation() noexcept`, which returns the first rule broken as a Violation (plain
-//! data, no allocation), and offers
+//! One validation shape for every parameter struct (one message formatter instead of a copy per
+//! struct): the struct states its rules once, in `first_violation() noexcept`, which returns the
+//! first rule broken as a Violation (plain data, no allocation), and offers
 //!   bool is_valid() const noexcept;          // real-time use: no allocation, no throw
 //!   std::string validation_error() const;     // "" when valid, else the message
 //!   void validate() const;                    // throws std::invalid_argument(message)

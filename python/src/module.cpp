@@ -7,7 +7,7 @@
 
 #include "bindings.hpp"
 #include "smoothsteer/evaluation/controller_registration.hpp"
-#include "smoothsteer/io/run_output.hpp"
+#include "smoothsteer/runner/run_output.hpp"
 
 namespace smoothsteer::python {
 

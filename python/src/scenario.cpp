@@ -12,9 +12,9 @@
 
 #include "bindings.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
-#include "smoothsteer/io/run_output.hpp"
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/trace_csv.hpp"
+#include "smoothsteer/runner/run_output.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 
 namespace smoothsteer::python {

@@ -20,6 +20,18 @@ def test_figures_command_writes_every_figure(tmp_path):
         assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+def test_tuned_pareto_plots_the_committed_table(tmp_path):
+    result = subprocess.run([sys.executable, "-m", "smoothsteer.figures", "--out", str(tmp_path),
+                             "--only", "tuned_pareto"], cwd=ROOT, env=python_environment(),
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stdout + result.stderr
+    with open(ROOT / "docs" / "results" / "tuning_rule.csv", newline="") as handle:
+        scenarios = {row["scenario"] for row in csv.DictReader(handle)}
+    assert scenarios
+    for scenario in scenarios:
+        assert (tmp_path / f"pareto_{scenario}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
 def test_unknown_figure_is_an_error(tmp_path):
     result = subprocess.run([sys.executable, "-m", "smoothsteer.figures", "--out", str(tmp_path),
                              "--only", "simu,nonsense"], cwd=ROOT, env=python_environment(),

@@ -13,7 +13,7 @@ namespace smoothsteer {
 std::optional<Violation> ComparisonSetup::first_violation() const noexcept {
   RuleChecker check("ComparisonSetup");
   // Upper bounds: beyond them the bisection of proposed_parameters and the baselines' gains
-  // overflow (issue 12, defect 2: wheelbase_m = 1e308 was accepted).
+  // overflow (wheelbase_m = 1e308 must be rejected, not turned into inf).
   check.require(positive_finite(wheelbase_m) && wheelbase_m <= max_wheelbase_m, "wheelbase_m",
                 wheelbase_m, "must be in (0, 1000]");
   check.require(positive_finite(nominal_speed_mps) &&

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
-#include "smoothsteer/io/controller_registry.hpp"
+#include "smoothsteer/runner/controller_registry.hpp"
 
 namespace smoothsteer {
 

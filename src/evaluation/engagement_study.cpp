@@ -12,7 +12,7 @@
 #include "smoothsteer/baselines/parameter_checks.hpp"
 #include "smoothsteer/evaluation/certified_route.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
-#include "smoothsteer/io/sweep.hpp"
+#include "smoothsteer/runner/sweep.hpp"
 
 namespace smoothsteer {
 

@@ -5,7 +5,7 @@
 
 #include "scenario_setup.hpp"
 #include "smoothsteer/baselines/comparison_controllers.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer {
 

@@ -14,7 +14,7 @@
 #include <numbers>
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer::detail {
 

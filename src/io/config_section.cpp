@@ -84,7 +84,7 @@ void ConfigSection::fail(const std::string& key, const std::string& reason) cons
 
 bool ConfigSection::has(const std::string& key) const {
   if (!node_ || !node_.IsMap() || !node_[key]) return false;
-  // "key: ~" or "key:" used to mean the default silently (issue 12, defect 6).
+  // "key: ~" or "key:" used to mean the default silently (silent defaults hide typos).
   if (node_[key].IsNull()) fail(key, "has no value (~ or empty); give a value or remove the key");
   return true;
 }

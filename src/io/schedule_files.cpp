@@ -4,8 +4,8 @@
 
 #include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/io/bounded_file.hpp"
-#include "smoothsteer/io/scenario.hpp"
 #include "smoothsteer/io/text_checks.hpp"
+#include "smoothsteer/io/vehicle_file.hpp"
 
 #include <array>
 #include <cmath>

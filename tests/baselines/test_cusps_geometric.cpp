@@ -1,5 +1,5 @@
 // Stanley and pure pursuit with their reverse forms drive the cusp scenarios of
-// tests/cusps/test_cusp_scenarios.cpp (the same plans) through CuspSequencer, wrapped in
+// tests/controller/test_cusp_scenarios.cpp (the same plans) through CuspSequencer, wrapped in
 // SaturatedController with |delta| <= 0.57 rad (the lead-wheel controller's certified angle bound)
 // and |d delta / dt| <= 1 rad/s. The final pose must be within 5 cm and 0.02 rad. Unlike the
 // lead-wheel controller, these two keep the limits only through the saturation; the test prints

@@ -11,7 +11,7 @@
 #include "smoothsteer/baselines/geometric_controllers.hpp"
 #include "smoothsteer/baselines/mpc_controller.hpp"
 #include "smoothsteer/evaluation/controller_registration.hpp"
-#include "smoothsteer/io/controller_registry.hpp"
+#include "smoothsteer/runner/controller_registry.hpp"
 
 namespace smoothsteer {
 namespace {

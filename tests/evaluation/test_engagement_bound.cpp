@@ -12,7 +12,7 @@
 #include "../../src/evaluation/engagement_model.hpp"
 #include "smoothsteer/evaluation/engagement_bound.hpp"
 #include "smoothsteer/evaluation/engagement_study.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "support/property.hpp"
 #include "support/source_dir.hpp"
 

@@ -5,12 +5,12 @@
 
 #include <cmath>
 
-#include "sim_test_support.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path_builder.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "support/property.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {

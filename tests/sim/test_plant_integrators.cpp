@@ -8,9 +8,9 @@
 
 #include <cmath>
 
-#include "sim_test_support.hpp"
 #include "smoothsteer/path/path_builder.hpp"
 #include "smoothsteer/sim/metrics.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <limits>
 
-#include "sim_test_support.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "support/property.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {

@@ -8,7 +8,6 @@
 #include <memory>
 #include <string>
 
-#include "sim_test_support.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/math/angles.hpp"
@@ -16,6 +15,7 @@
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "support/property.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <memory>
 
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/system/steering_system.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"

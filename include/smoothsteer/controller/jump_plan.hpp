@@ -14,7 +14,7 @@
 namespace smoothsteer {
 
 //! Counter-steer of the plan as a share of the jump: the linear programme of
-//! scripts/feedforward_bound.py counter-steers by 0.20-0.24 J on circle_sections' jumps.
+//! studies/feedforward_bound.py counter-steers by 0.20-0.24 J on circle_sections' jumps.
 inline constexpr double jump_plan_counter_share = 0.22;
 //! The plan ramps at this share of L_ff, so that the nonlinear chain inverse of its lagged
 //! response stays within the rate limit.

@@ -56,7 +56,7 @@ struct ControllerOutput {
 
 //! The range of ControllerInput that update() accepts. Beyond it the arithmetic breaks: squared
 //! distances overflow from 1e154 m on, angles and positions lose every digit that matters. The
-//! bounds are far beyond any car (issue 12, defect 2).
+//! bounds are far beyond any car (beyond them the arithmetic returns inf or NaN).
 struct ControllerInputRange {
   static constexpr double max_abs_coordinate_m = 1e9;  //!< |x|, |y|; resolution 1.2e-7 m there
   static constexpr double max_abs_heading_rad = 1e6;   //!< |psi|; resolution 1.2e-10 rad there

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "smoothsteer/controller/steering_controller.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
 
 namespace smoothsteer {

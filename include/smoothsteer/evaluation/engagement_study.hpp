@@ -11,7 +11,7 @@
 
 #include "smoothsteer/evaluation/engagement_bound.hpp"
 #include "smoothsteer/evaluation/results_table.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer {
 

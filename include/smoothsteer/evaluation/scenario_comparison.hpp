@@ -1,6 +1,6 @@
 #pragma once
 //! \file scenario_comparison.hpp
-//! Benchmarks 2 and 3 on the kinetic single-track model with actuator (smoothsteer_io):
+//! Benchmarks 2 and 3 on the kinetic single-track model with actuator (smoothsteer_runner):
 //! every comparison controller on the lane-change scenarios, and the proposed controller's
 //! four parameter settings of Sec. IV-A on circle_sections.
 

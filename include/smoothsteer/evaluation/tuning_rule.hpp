@@ -1,7 +1,7 @@
 #pragma once
 //! \file tuning_rule.hpp
-//! One stated tuning rule for every controller of the comparison (issue 9, item 3;
-//! docs/baselines.md "Tuning rule"):
+//! One stated tuning rule for every controller of the comparison (so that no controller of the
+//! comparison is tuned more than another; docs/baselines.md "Tuning rule"):
 //!   1. each controller gets a log-spaced grid over its gains with the same number of
 //!      configurations (`budget`, a power of two; every axis gets a power-of-two share). The
 //!      certified lead-wheel controller (`certified`, certified_route.hpp) gets a grid over the
@@ -28,7 +28,7 @@
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
 #include "smoothsteer/evaluation/results_table.hpp"
-#include "smoothsteer/io/scenario.hpp"
+#include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 
 namespace smoothsteer {
@@ -55,7 +55,7 @@ void apply_gain(std::string_view controller, const std::string& key, double valu
 //! a power of two >= 2^axes.
 std::vector<int> grid_shape(int budget, std::size_t axes);
 
-//! The controllers of the study (issue 9): the certified lead-wheel controller and every
+//! The controllers of the study: the certified lead-wheel controller and every
 //! real-time baseline.
 const std::vector<std::string>& study_controller_names();
 

@@ -1,10 +1,10 @@
 #pragma once
 //! \file atomic_output.hpp
-//! The one place that publishes output files (issue 12, defects 4 and 5): a file or a whole
-//! directory is built under a temporary name next to its target and renamed into place, so a
-//! reader sees the old outputs or the new ones, never a mix or half a file. Targets that exist
-//! and are not what we write (a device, a symlink, a FIFO, a directory of other files) are
-//! refused instead of being replaced.
+//! The one place that publishes output files (never half an output set, never a rename over a
+//! device node): a file or a whole directory is built under a temporary name next to its target and
+//! renamed into place, so a reader sees the old outputs or the new ones, never a mix or half a
+//! file. Targets that exist and are not what we write (a device, a symlink, a FIFO, a directory of
+//! other files) are refused instead of being replaced.
 
 #include <filesystem>
 #include <string>

@@ -12,7 +12,8 @@ namespace smoothsteer::io {
 
 //! Largest magnitude accepted for any number read from a file or the command line. Inputs
 //! beyond it (1e155 m away, radius 1e308) overflow squares and products inside the
-//! arithmetic (issue 12, defect 2); 1e9 m is still 25 times the circumference of the earth.
+//! arithmetic (a result would be inf or NaN); 1e9 m is still 25 times the circumference of the
+//! earth.
 inline constexpr double max_input_magnitude = 1e9;
 
 //! Parses the whole of `text` as a decimal or exponent number ("0.3", "-1e-3", subnormals such

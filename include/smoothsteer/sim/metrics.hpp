@@ -90,7 +90,7 @@ struct Metrics {
 };
 
 //! Reduces a trace one sample at a time: the same numbers as compute_metrics() without
-//! holding the trace (streaming runs, issue 12).
+//! holding the trace (streaming runs, whose memory does not grow with their length).
 class MetricsAccumulator {
  public:
   explicit MetricsAccumulator(const MetricsParameters& parameters);

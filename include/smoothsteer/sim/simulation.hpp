@@ -96,8 +96,9 @@ struct SimulationParameters {
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
   SideSlipEstimation side_slip;        //!< what the controller gets as the rear axle's slip
 
-  //! Caps on what the input controls (issue 12, defect 3): control steps of one run
-  //! (duration_s / control_period_s) and plant sub-steps (duration_s / substep_s).
+  //! Caps on what the input controls (so that no input can make a run allocate without bound):
+  //! control steps of one run (duration_s / control_period_s) and plant sub-steps (duration_s /
+  //! substep_s).
   static constexpr double max_control_steps = 1e7;
   static constexpr double max_substeps = 1e8;
 
@@ -170,7 +171,7 @@ using TraceObserver = std::function<void(const TraceSample&)>;
 //! Runs the closed loop from the rear-axle pose `start` (vehicle driving straight at the
 //! profile's initial speed, actuator settled at 0). The controller is reset first. A sample
 //! with a non-finite value is never emitted: the run stops before it with stop_reason
-//! "non_finite" (issue 12, defect 2).
+//! "non_finite" (a non-finite value is never reported with status ok).
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
