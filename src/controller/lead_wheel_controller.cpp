@@ -264,8 +264,7 @@ void LeadWheelController::update_disturbance_estimate(const ControllerInput& inp
     if (distance > 1e-6) {
       // The steering in effect over the last period: issued `actuator_delay_s` earlier, plus
       // the lag of the tires' slip that the single-track inversion previews (lag / g metres).
-      const double slip_lag_m = dynamics_preview_m_ - parameters_.preview_time_s * input.speed_mps;
-      const double delay = parameters_.actuator_delay_s + slip_lag_m / input.speed_mps;
+      const double delay = parameters_.actuator_delay_s + slip_lag_m_ / input.speed_mps;
       const auto age =
           std::min<std::size_t>(command_history_count_ - 1,
                                 static_cast<std::size_t>(std::lround(delay / input.period_s)));
@@ -322,8 +321,8 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
     const double steering =
         disturbance_estimate_ == 0.0
             ? command.steering_rad
-            : std::atan(std::tan(command.steering_rad) +
-                        parameters_.vehicle_wheelbase_m * disturbance_estimate_);
+            : disturbed_steering_angle(command.steering_rad, parameters_.vehicle_wheelbase_m,
+                                       disturbance_estimate_);
     pose = model.step(pose, steering, input.speed_mps, duration);
   }
   return pose;
@@ -350,7 +349,8 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     const double v2 = speed_magnitude * speed_magnitude;
     const double lag = (front + rear) * v2;  // L (K_f + K_r) v^2 kappa' / L
     dynamics_gain_ = std::max(0.5, 1.0 + (front - rear) * v2 / parameters_.vehicle_wheelbase_m);
-    dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude + lag / dynamics_gain_;
+    slip_lag_m_ = lag / dynamics_gain_;
+    dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude + slip_lag_m_;
     // g kappa(s + d) carries lag^2 / (2 g) kappa''; the model asks K_f K_r v^4 kappa''.
     dynamics_bend_m2_ = parameters_.slip_preview_second_order
                             ? front * rear * v2 * v2 - 0.5 * lag * lag / dynamics_gain_

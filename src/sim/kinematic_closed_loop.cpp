@@ -54,7 +54,7 @@ KinematicLoopResult run_kinematic_closed_loop(SteeringController& controller, co
     // Zero-order hold over the period; the disturbance bends the rear-axle path as an extra
     // curvature: tan(delta_eff) / lambda = tan(delta) / lambda + kappa_d.
     const double disturbed =
-        std::atan(std::tan(steering) + options.wheelbase_m * options.curvature_disturbance);
+        disturbed_steering_angle(steering, options.wheelbase_m, options.curvature_disturbance);
     pose = plant.step(pose, disturbed, options.speed_mps, options.period_s);
     distance += std::abs(options.speed_mps) * options.period_s;
   }

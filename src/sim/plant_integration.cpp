@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "exact_actuator.hpp"
+#include "smoothsteer/vehicle/kinematic_single_track.hpp"
 
 #if SMOOTHSTEER_HAS_ODEINT
 #include "odeint.hpp"
@@ -25,7 +26,7 @@ using PlantArray = std::array<double, VehicleState::size>;
 double effective(const PlantContext& c, double delta) noexcept {
   delta += c.steering_offset_rad;
   if (c.plant_disturbance == 0.0) return delta;
-  return std::atan(std::tan(delta) + c.model.parameters().wheelbase_m() * c.plant_disturbance);
+  return disturbed_steering_angle(delta, c.model.parameters().wheelbase_m(), c.plant_disturbance);
 }
 
 VehicleState derivative(const PlantContext& c, const VehicleState& s, double delta,

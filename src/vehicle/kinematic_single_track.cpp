@@ -20,4 +20,9 @@ Pose2 KinematicSingleTrack::step(const Pose2& pose, double steering_angle_rad, d
   return next;
 }
 
+double disturbed_steering_angle(double steering_angle_rad, double wheelbase_m,
+                                double curvature_disturbance) noexcept {
+  return std::atan(std::tan(steering_angle_rad) + wheelbase_m * curvature_disturbance);
+}
+
 }  // namespace smoothsteer

@@ -124,9 +124,13 @@ class LeadWheelController final : public SteeringController {
   //! chain aims at dynamics_gain_ kappa(s + dynamics_preview_m_) + dynamics_bend_ kappa''.
   double dynamics_gain_ = 1.0;
   double dynamics_bend_m2_ = 0.0;
+  //! (K_f + K_r) v^2 / g: how far the tires' slip lags the chain's curvature (the part of
+  //! dynamics_preview_m_ that the model asks for) [m].
+  double slip_lag_m_ = 0.0;
   double disturbance_estimate_ = 0.0;  //!< kappa_d estimate [1/m]
   Vec2 previous_position_{};           //!< rear axle at the last update()
   double previous_course_ = 0.0;       //!< psi + beta_r at the last update()
+  bool has_previous_pose_ = false;     //!< previous_position_ and previous_course_ are set
   //! The path's curvature at the rear axle at the last two update()s, and how far the car has
   //! driven since it last moved faster than steady_lateral_jerk_mps3 allows [m].
   double rear_path_curvature_ = 0.0;
@@ -139,8 +143,7 @@ class LeadWheelController final : public SteeringController {
   static constexpr double steady_lateral_jerk_mps3 = 0.1;
   static constexpr double min_settling_m = 5.0;
   static constexpr double settling_time_s = 0.5;
-  bool has_previous_pose_ = false;  //!< how far ahead the feedforward reads the path [m]
-  TargetCurve target_;              //!< target curve of the current period
+  TargetCurve target_;  //!< target curve of the current period
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
   double chain_reach_ = 0.0;  //!< sum lambda_i: how far ahead of the rear axle the lead wheel is

@@ -17,4 +17,10 @@ struct KinematicSingleTrack {
              double dt_s) const noexcept;
 };
 
+//! The steering angle that turns the rear axle as `steering_angle_rad` plus a curvature
+//! disturbance kappa_d does (a banked road, a crosswind, a misaligned rack; eq. kappar):
+//! tan(delta_eff) / lambda_veh = tan(delta) / lambda_veh + kappa_d.
+double disturbed_steering_angle(double steering_angle_rad, double wheelbase_m,
+                                double curvature_disturbance) noexcept;
+
 }  // namespace smoothsteer
