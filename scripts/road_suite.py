@@ -109,19 +109,20 @@ class Layout:
 
 
 CONTROLLER = """\
-# The controller block of lane_change_15.yaml (the certified route; its schedule covers
-# 0.5-20 m/s and was tuned on the lane change's path).
+# The passenger car's one controller block, as in lane_change_*.yaml and circle_sections.yaml
+# (the certified route; its schedule covers 0.5-20 m/s and was tuned on the lane change's path).
 controller:
   type: scheduled_lead_wheel
   schedule: {schedule}
   # The steering governor (docs/governor.md), as in every shipped lead-wheel scenario.
   governor: {{enabled: true}}
   cornering_target: rear_axle_exact
-  actuator_delay_s: 0.048
-  slip_preview: true
-  preview_time_s: 0.0
-  boundary_layer: 0.03
   curvature_preview: planned_jumps
+  slip_preview: true
+  # The Smith predictor's delay and the catch-up over speed, from the actuator, the tires and the
+  # path (docs/vehicle_dynamics.md, "Compensation over speed").
+  derived_compensation: true
+  boundary_layer: 0.03
 """
 
 SIMULATION = """\
@@ -300,11 +301,12 @@ controller:
   schedule: ../schedules/passenger_car_parking.csv
   governor: {{enabled: true}}
   cornering_target: rear_axle_exact
-  actuator_delay_s: 0.048
-  slip_preview: true
-  preview_time_s: 0.0
-  boundary_layer: 0.03
   curvature_preview: planned_jumps
+  slip_preview: true
+  # The Smith predictor's delay and the catch-up over speed, from the actuator, the tires and the
+  # path (docs/vehicle_dynamics.md, "Compensation over speed").
+  derived_compensation: true
+  boundary_layer: 0.03
 """
 
 PARKING_SIMULATION = """\

@@ -5,6 +5,7 @@
 #include <map>
 #include <mutex>
 #include <numbers>
+#include <optional>
 
 #include <filesystem>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
+#include "smoothsteer/tuning/vehicle_steering_system.hpp"
 
 namespace smoothsteer::io {
 namespace {
@@ -155,14 +157,34 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
                                                               const VehicleParameters& vehicle) {
   ControllerParameters base;
   base.vehicle_wheelbase_m = vehicle.wheelbase_m();
+  // The Smith predictor's delay and the catch-up over speed from the car (speed_compensation.hpp)
+  // or, without it, the keys actuator_delay_s and feedforward_catch_up as set.
+  const bool derived = c.boolean("derived_compensation", false);
+  if (derived) {
+    for (const char* key : {"actuator_delay_s", "feedforward_catch_up"}) {
+      if (c.has(key)) {
+        c.fail(key,
+               "conflicts with derived_compensation: true, which sets it over speed; give "
+               "one or the other");
+      }
+    }
+  }
   read_law_options(c, base, vehicle);
+  std::optional<SpeedCompensation> compensation;
+  if (derived) {
+    if (!path) c.fail("derived_compensation", "needs the path (its largest curvature)");
+    // The scenario loader fills actuator_group_delay_s from the actuator block.
+    const double group_delay = c.required_number("actuator_group_delay_s",
+                                                 {0.0, ControllerParameters::max_actuator_delay_s});
+    compensation = speed_compensation(vehicle, group_delay, *path);
+  }
   std::filesystem::path schedule_file = c.required_text("schedule");
   if (schedule_file.is_relative()) {
     schedule_file = std::filesystem::path(c.file()).parent_path() / schedule_file;
   }
   try {
     return std::make_unique<ScheduledController>(read_schedule_csv(schedule_file.string(), base),
-                                                 std::move(path));
+                                                 std::move(path), compensation);
   } catch (const std::invalid_argument& error) {
     c.fail("schedule", error.what());  // [[noreturn]]
   }

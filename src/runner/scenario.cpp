@@ -10,6 +10,7 @@
 #include "smoothsteer/runner/controller_registry.hpp"
 #include "smoothsteer/sim/curvature_speed_profile.hpp"
 #include "smoothsteer/sim/gear_changes.hpp"
+#include "smoothsteer/tuning/vehicle_steering_system.hpp"
 
 namespace smoothsteer::io {
 namespace {
@@ -266,7 +267,16 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
     s.speed = curvature_speed_profile(*s.path, *curvature_limits);
   }
 
-  s.controller = c.raw("controller");
+  s.controller = YAML::Clone(c.raw("controller"));
+  // derived_compensation starts the Smith predictor's delay from the actuator's group delay,
+  // which the controller section cannot know: the actuator block gives it.
+  if (const YAML::Node& section = s.controller; section.IsMap()) {
+    const YAML::Node derived = section["derived_compensation"];
+    if (derived && derived.IsScalar() && derived.Scalar() == "true" &&
+        !section["actuator_group_delay_s"]) {
+      s.controller["actuator_group_delay_s"] = actuator_group_delay_s(s.actuator);
+    }
+  }
   YAML::Node resolved_controller;
   make_controller(s.controller, "controller", file, s.path, s.vehicle, &resolved_controller,
                   overridden);

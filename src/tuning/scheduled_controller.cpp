@@ -11,19 +11,35 @@ const GainSchedule& non_empty(const GainSchedule& schedule) {
   return schedule;
 }
 
+std::optional<SpeedCompensation> checked(std::optional<SpeedCompensation> compensation) {
+  if (compensation) compensation->validate();
+  return compensation;
+}
+
 }  // namespace
 
-ScheduledController::ScheduledController(GainSchedule schedule, std::shared_ptr<const Path> path)
+ScheduledController::ScheduledController(GainSchedule schedule, std::shared_ptr<const Path> path,
+                                         std::optional<SpeedCompensation> compensation)
     : schedule_(std::move(schedule)),
-      controller_(non_empty(schedule_).parameters_at(schedule_.entries().front().speed_mps),
+      compensation_(checked(compensation)),
+      controller_(parameters_at(non_empty(schedule_).entries().front().speed_mps),
                   std::move(path)) {}
+
+ControllerParameters ScheduledController::parameters_at(double speed_mps) const noexcept {
+  ControllerParameters p = schedule_.parameters_at(speed_mps);
+  if (compensation_) {
+    p.actuator_delay_s = compensation_->delay_s(speed_mps);
+    p.feedforward_catch_up = compensation_->catch_up(speed_mps);
+  }
+  return p;
+}
 
 Status ScheduledController::compute_command(const ControllerInput& input,
                                             ControllerOutput& output) noexcept {
   if (!std::isfinite(input.speed_mps)) return Status::invalid_input;
   const double speed = std::abs(input.speed_mps);
   if (speed != tuned_speed_) {
-    const Status tuned = controller_.retune(schedule_.parameters_at(speed));
+    const Status tuned = controller_.retune(parameters_at(speed));
     if (tuned != Status::ok) return tuned;
     tuned_speed_ = speed;
   }

@@ -79,6 +79,18 @@ double actuator_group_delay_s(const ActuatorParameters& actuator) noexcept {
   return actuator.dead_time_s + (actuator.ideal ? 0.0 : 3.0 / actuator.pole_radps());
 }
 
+SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
+                                     double actuator_group_delay_s, const Path& path) {
+  const double most = ControllerParameters::max_slip_gradient_s2pm;
+  SpeedCompensation compensation;
+  compensation.actuator_group_delay_s = actuator_group_delay_s;
+  compensation.slip_gradient_sum_s2pm =
+      std::min(vehicle.front_slip_gradient(), most) + std::min(vehicle.rear_slip_gradient(), most);
+  compensation.design_curvature_per_m = path_demand(path).max_curvature;
+  compensation.friction_limit_mps2 = vehicle.friction_limit_mps2();
+  return compensation;
+}
+
 ControllerParameters steering_system_controller(const VehicleDescription& car,
                                                 const SteeringSystemOptions& options) {
   const VehicleParameters& vehicle = car.vehicle;
@@ -128,8 +140,15 @@ SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_p
   SteeringSystemParameters system =
       SteeringSystemParameters::from_vehicle(car.vehicle, options.observer_tire_model);
   system.slip_input = options.slip_input;
-  return SteeringSystem(std::make_unique<ScheduledController>(std::move(schedule), std::move(path)),
-                        system);
+  // Without a delay of the caller's, the delay and the catch-up follow the speed
+  // (speed_compensation.hpp), as the shipped scenarios' derived_compensation.
+  std::optional<SpeedCompensation> compensation;
+  if (!options.actuator_delay_s) {
+    compensation = speed_compensation(car.vehicle, actuator_group_delay_s(car.actuator), *path);
+  }
+  return SteeringSystem(
+      std::make_unique<ScheduledController>(std::move(schedule), std::move(path), compensation),
+      system);
 }
 
 }  // namespace smoothsteer

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "smoothsteer/runner/scenario.hpp"
+#include "support/source_dir.hpp"
 
 namespace smoothsteer::io {
 namespace {
@@ -51,6 +52,23 @@ void expect_contains(const std::string& message, std::initializer_list<std::stri
 
 TEST_F(ScenarioErrors, ValidFileLoads) {
   EXPECT_EQ(error_of(write("ok.yaml", valid)), "");
+}
+
+TEST_F(ScenarioErrors, DerivedCompensationConflictsWithTheKeysItSets) {
+  const std::string shipped =
+      (smoothsteer::testing::source_dir() / "scenarios" / "lane_change_15.yaml").string();
+  for (const char* key : {"actuator_delay_s", "feedforward_catch_up"}) {
+    expect_contains(error_of(shipped, {std::string("controller.") + key + "=0.03"}),
+                    {shipped, std::string("'controller.") + key + "'", "(from --set)",
+                     "conflicts with derived_compensation: true"});
+  }
+  // Without the actuator block's group delay (a controller section read on its own) the key
+  // that carries it is required.
+  const std::string own =
+      write("d.yaml", std::string("name: t\npath: {type: straight}\nspeed: {initial_mps: 5}\n") +
+                          "controller: {type: scheduled_lead_wheel, derived_compensation: true, "
+                          "actuator_group_delay_s: -1, schedule: x.csv}\n");
+  expect_contains(error_of(own), {own, "'controller.actuator_group_delay_s'"});
 }
 
 TEST_F(ScenarioErrors, MalformedYamlNamesFileAndLine) {

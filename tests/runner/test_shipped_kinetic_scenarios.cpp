@@ -1,19 +1,24 @@
 // The shipped kinetic scenarios at the car's own actuator (0.4 rad/s) hold the figures that
-// docs/vehicle_dynamics.md section 7 reports: no held sample of the command above the vehicle
-// file's limits, no spin, and the rear axle's error below a pinned bound. The bounds are the
-// issue's targets where the file meets them and the reported figure plus a small margin where it
-// does not yet (lane_change_15, circle_sections), so that a change that makes a figure worse
-// fails here. The observer's stiffness and mass off by +-20 % must degrade gracefully: within a
-// pinned bound at most about twice the nominal one, still without spin or a held sample above
-// the limits.
+// docs/vehicle_dynamics.md section 7 reports, with the passenger car's one controller block
+// (derived_compensation: the Smith delay and the catch-up over speed from the car): no held
+// sample of the command above the vehicle file's limits, no spin, and the rear axle's error below
+// a pinned bound, as the median and the largest over 20 noise seeds. The bounds are the targets
+// where the block meets them and the reported figure plus a small margin where it does not
+// (lane_change_19, circle_sections), so that a change that makes a figure worse fails here. The
+// observer's stiffness and mass off by +-20 % must degrade gracefully, still without spin or a
+// held sample above the limits. Every kinetic scenario of the passenger car carries the same
+// controller block.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/runner/controller_registry.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
@@ -25,27 +30,29 @@ using testing::source_dir;
 
 struct ShippedCase {
   std::string file;
-  double settle_time_s;     //!< the error is measured from here on (the start offset settles)
-  double max_rear_error_m;  //!< pinned bound on the rear axle's |e|
+  double settle_time_s;        //!< the error is measured from here on (the start offset settles)
+  double median_rear_error_m;  //!< pinned bound on the median over the seeds of max |e|
+  double max_rear_error_m;     //!< pinned bound on max |e| at every seed
   double max_rear_error_observer_off_m;  //!< the same with the observer's parameters off 20 %
 };
 
-// At each file's own noise seed (over other seeds the figures spread by a few per cent,
-// docs/vehicle_dynamics.md section 7), with the steering governor of docs/governor.md as the files
-// ship it: 0.025 / 0.030 / 0.264 m on the lane changes and 0.122 m on circle_sections after 8 s
-// (0.024 / 0.031 / 0.233 / 0.097 m without it). With the observer off by 20 %: 0.032-0.044 /
-// 0.053-0.074 / 0.237-0.406 / 0.145-0.169 m (without the governor 0.031-0.043 / 0.056-0.074 /
-// 0.266-0.281 / 0.147-0.171 m). The bounds are those figures plus 5-10 %.
+// Over noise seeds 1-20 (median, min-max): 0.0060 (0.0049-0.0070), 0.0326 (0.0314-0.0349),
+// 0.274 (0.264-0.282) m on the lane changes and 0.104 (0.092-0.110) m on circle_sections after
+// 8 s. With the observer off by 20 % (seed 1): 0.025-0.034 / 0.061-0.075 / 0.301-0.363 /
+// 0.132-0.240 m; disturbances_15 0.071-0.103 m from 10 s on. The bounds are the targets
+// (0.03 / 0.04 m) or those figures plus 5-10 %.
 const std::vector<ShippedCase> shipped_cases = {
-    {"lane_change_10.yaml", 0.0, 0.03, 0.05},
-    {"lane_change_15.yaml", 0.0, 0.033, 0.08},
-    {"lane_change_19.yaml", 0.0, 0.28, 0.43},
-    {"circle_sections.yaml", 8.0, 0.13, 0.19},
+    {"lane_change_10.yaml", 0.0, 0.03, 0.03, 0.04},
+    {"lane_change_15.yaml", 0.0, 0.04, 0.04, 0.08},
+    {"lane_change_19.yaml", 0.0, 0.29, 0.30, 0.40},
+    {"circle_sections.yaml", 8.0, 0.11, 0.12, 0.26},
     // A rack misaligned by 0.01 rad and a plant curvature of 0.002 1/m from t = 0 at 15 m/s: the
-    // estimate of docs/feedforward.md section 7 leaves 1.6-3.7 mm from 10 s on over noise seeds
-    // 1-5. With the observer's model off by 20 % its biased side slip leaves 8-10 cm.
-    {"disturbances_15.yaml", 10.0, 0.01, 0.12},
+    // estimate of docs/feedforward.md section 7 leaves 3-4 mm from 10 s on. With the observer's
+    // model off by 20 % its biased side slip leaves 7-10 cm.
+    {"disturbances_15.yaml", 10.0, 0.01, 0.01, 0.12},
 };
+
+constexpr int noise_seeds = 20;
 
 struct RunFigures {
   double max_rear_error_m = 0.0;
@@ -79,21 +86,54 @@ RunFigures run_figures(const ShippedCase& shipped, const std::vector<std::string
 // A spin shows as a heading error far beyond any tracking transient.
 constexpr double spin_heading_error_rad = 1.0;
 
-TEST(ShippedKineticScenarios, MeetTheirPinnedFiguresAtTheCarsActuator) {
+TEST(ShippedKineticScenarios, MeetTheirPinnedFiguresAtTheCarsActuatorOverNoiseSeeds) {
   for (const ShippedCase& shipped : shipped_cases) {
-    SCOPED_TRACE(shipped.file);
-    const RunFigures figures = run_figures(shipped, {});
-    EXPECT_EQ(figures.held_samples_above_limits, 0);
-    EXPECT_LT(figures.max_abs_heading_error_rad, spin_heading_error_rad);
-    EXPECT_LE(figures.max_rear_error_m, shipped.max_rear_error_m);
+    std::vector<double> errors;
+    for (int seed = 1; seed <= noise_seeds; ++seed) {
+      SCOPED_TRACE(shipped.file + " at simulation.noise_seed=" + std::to_string(seed));
+      const RunFigures figures =
+          run_figures(shipped, {"simulation.noise_seed=" + std::to_string(seed)});
+      EXPECT_EQ(figures.held_samples_above_limits, 0);
+      EXPECT_LT(figures.max_abs_heading_error_rad, spin_heading_error_rad);
+      EXPECT_LE(figures.max_rear_error_m, shipped.max_rear_error_m);
+      errors.push_back(figures.max_rear_error_m);
+    }
+    std::sort(errors.begin(), errors.end());
+    const double median = 0.5 * (errors[noise_seeds / 2 - 1] + errors[noise_seeds / 2]);
+    EXPECT_LE(median, shipped.median_rear_error_m) << shipped.file;
   }
 }
 
+// The controller block as written in a scenario file, key by key (in any order), with the
+// schedule's path reduced to its file name (the road suite's files sit one folder deeper).
+std::map<std::string, std::string> controller_block(const std::string& file) {
+  const YAML::Node block =
+      load_yaml_file((source_dir() / "scenarios" / file).string())["controller"];
+  std::map<std::string, std::string> keys;
+  for (const auto& entry : block) keys[entry.first.as<std::string>()] = YAML::Dump(entry.second);
+  keys["schedule"] = std::filesystem::path(keys["schedule"]).filename().string();
+  return keys;
+}
+
+TEST(ShippedKineticScenarios, ShareOneControllerBlock) {
+  const auto reference = controller_block("lane_change_15.yaml");
+  for (const char* file :
+       {"lane_change_10.yaml", "lane_change_19.yaml", "circle_sections.yaml", "hairpin.yaml",
+        "roads/rural_80.yaml", "roads/motorway_exit.yaml", "roads/roundabout.yaml",
+        "roads/urban_turn.yaml", "roads/mountain_hairpins.yaml"}) {
+    EXPECT_EQ(controller_block(file), reference) << file;
+  }
+  // disturbances_15 adds the disturbance estimate, and nothing else.
+  auto disturbed = controller_block("disturbances_15.yaml");
+  EXPECT_EQ(disturbed.erase("disturbance_estimation_length_m"), 1U);
+  EXPECT_EQ(disturbed, reference);
+}
+
 TEST(ShippedKineticScenarios, SteeringOffsetAndPlantDisturbanceLeaveNoSteadyOffset) {
-  // Either sign, each alone: within 2 cm from 10 s on (the rack alone 1.8-1.9 cm over noise
-  // seeds, the slower case: its smaller drift leaves the recovery to the certified near law);
-  // without the estimate 2.6 m.
-  const ShippedCase disturbed{"disturbances_15.yaml", 10.0, 0.02, 0.0};
+  // Either sign, each alone: within 2 cm from 10 s on (each alone 1.4-1.6 cm, the slower cases:
+  // the smaller drift leaves the recovery to the certified near law); without the estimate over
+  // 1 m.
+  const ShippedCase disturbed{"disturbances_15.yaml", 10.0, 0.02, 0.02, 0.0};
   const std::vector<std::vector<std::string>> variants = {
       {"simulation.steering_offset_rad=-0.01", "simulation.plant_curvature_disturbance=-0.002"},
       {"simulation.plant_curvature_disturbance=0"},

@@ -2,20 +2,27 @@
 //! \file scheduled_controller.hpp
 //! The lead-wheel controller driven by a gain schedule: every update() looks up the parameters
 //! for the measured |v| (GainSchedule::parameters_at, continuous in v) and retunes the controller
-//! before the control step. Real time: noexcept, no allocation.
+//! before the control step. With a SpeedCompensation the Smith predictor's delay and the
+//! feedforward's catch-up follow |v| too (speed_compensation.hpp). Real time: noexcept, no
+//! allocation.
 
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
+#include "smoothsteer/tuning/speed_compensation.hpp"
 
 namespace smoothsteer {
 
 class ScheduledController final : public SteeringController {
  public:
-  //! Throws std::invalid_argument for an empty schedule or a null path.
-  ScheduledController(GainSchedule schedule, std::shared_ptr<const Path> path);
+  //! Throws std::invalid_argument for an empty schedule, a null path or a compensation that
+  //! breaks a rule (naming its field). Without a compensation the schedule's base keeps its own
+  //! actuator_delay_s and feedforward_catch_up.
+  ScheduledController(GainSchedule schedule, std::shared_ptr<const Path> path,
+                      std::optional<SpeedCompensation> compensation = std::nullopt);
 
  protected:
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
@@ -25,6 +32,10 @@ class ScheduledController final : public SteeringController {
   const char* name() const noexcept override { return "scheduled_lead_wheel"; }
 
   const GainSchedule& schedule() const noexcept { return schedule_; }
+  const std::optional<SpeedCompensation>& compensation() const noexcept { return compensation_; }
+  //! What update() gives the inner controller at |v|: the schedule's parameters, with the
+  //! compensation's delay and catch-up where there is one.
+  ControllerParameters parameters_at(double speed_mps) const noexcept;
   const LeadWheelController& controller() const noexcept { return controller_; }
   //! Replanning, forwarded to the inner controller (see SteeringController::set_path).
   Status set_path(std::shared_ptr<const Path> path) noexcept override {
@@ -38,6 +49,7 @@ class ScheduledController final : public SteeringController {
 
  private:
   GainSchedule schedule_;
+  std::optional<SpeedCompensation> compensation_;
   LeadWheelController controller_;
   double tuned_speed_ = -1.0;  //!< |v| of the last retune; equal speeds skip the retune
 };

@@ -14,6 +14,7 @@
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/system/steering_system.hpp"
+#include "smoothsteer/tuning/speed_compensation.hpp"
 #include "smoothsteer/tuning/vehicle_limits.hpp"
 #include "smoothsteer/validation.hpp"
 #include "smoothsteer/vehicle/steering_actuator.hpp"
@@ -58,8 +59,10 @@ struct SteeringSystemOptions {
   bool slip_preview = true;
   //! Friction guard at the tires' mu g (ControllerParameters::max_lateral_acceleration_mps2).
   bool friction_guard = false;
-  //! The Smith predictor's delay [s]; absent: the actuator's dead time plus the group delay of
-  //! its low-pass at low frequency, 3 / w_p (none for an ideal actuator).
+  //! The Smith predictor's delay [s]; absent: it follows the speed from the actuator's dead time
+  //! plus the group delay of its low-pass at low frequency, 3 / w_p (none for an ideal
+  //! actuator), the tires and the path, and so does the feedforward's catch-up
+  //! (speed_compensation.hpp; controller.feedforward_catch_up is then not used).
   std::optional<double> actuator_delay_s;
   SlipInput slip_input = SlipInput::observer;
   ObserverTireModel observer_tire_model = ObserverTireModel::magic_formula;
@@ -76,6 +79,12 @@ VehicleLimits vehicle_limits(const VehicleParameters& vehicle);
 
 //! The Smith predictor's delay of the actuator: dead time + 3 / w_p (0 + dead time if ideal).
 double actuator_group_delay_s(const ActuatorParameters& actuator) noexcept;
+
+//! The delay and catch-up over speed (speed_compensation.hpp) of `vehicle` on `path`: t_act =
+//! `actuator_group_delay_s`, the slip gradients as the single-track inversion uses them, the
+//! path's largest curvature as kappa_d and the tires' mu g.
+SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
+                                     double actuator_group_delay_s, const Path& path);
 
 //! The controller parameters make_steering_system() gives the schedule as its template.
 ControllerParameters steering_system_controller(const VehicleDescription& car,
