@@ -100,7 +100,13 @@ std::unique_ptr<SteeringController> make_certified_controller(
   const TuningOptions options = certified_route_options(scenario, knobs);
   GainSchedule schedule = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
                                                        certified_speed_grid(scenario));
-  return std::make_unique<ScheduledController>(std::move(schedule), scenario.path);
+  // The delay and the catch-up over speed as the scenario's own controller has them
+  // (derived_compensation), so that the route differs from the file only in its schedule.
+  const std::unique_ptr<SteeringController> own = io::make_controller(scenario);
+  const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
+  return std::make_unique<ScheduledController>(
+      std::move(schedule), scenario.path,
+      scheduled != nullptr ? scheduled->compensation() : std::nullopt);
 }
 
 }  // namespace smoothsteer

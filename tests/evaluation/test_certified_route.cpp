@@ -19,9 +19,12 @@ namespace {
 using testing::source_file;
 
 TEST(CertifiedRoute, ReproducesTheCommittedCircleSectionsSchedule) {
-  // scenarios/circle_sections.yaml: tune --speeds 0.5:13:0.5 --max-longitudinal-acceleration 0.5
-  // --feedforward-rate-share 0.5 --path scenarios/circle_sections.yaml.
-  const io::Scenario scenario = io::load_scenario(source_file("scenarios/circle_sections.yaml"));
+  // tune --speeds 0.5:13:0.5 --max-longitudinal-acceleration 0.5 --feedforward-rate-share 0.5
+  // --path scenarios/circle_sections.yaml --feedforward-headroom 1.8 (the file itself now runs
+  // the car's one schedule, passenger_car_lane_change.csv).
+  const io::Scenario scenario =
+      io::load_scenario(source_file("scenarios/circle_sections.yaml"),
+                        {"controller.schedule=schedules/passenger_car_circle_sections.csv"});
   const TuningOptions options =
       certified_route_options(scenario, {{"feedforward_rate_share", 0.5}});
   const GainSchedule computed = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
