@@ -4,7 +4,7 @@
 // every rerun, since wall-clock times go to a separate *_timings file, which is not committed.
 //   roc           Tab. roc_vx: optimal (Ipopt) vs proposed (n = 1) vs HOSM reaching distance
 //   lane-change   every controller on scenarios/lane_change_{10,15,19}.yaml
-//   parameters    circle_sections.yaml with the four settings of Sec. IV-A
+//   parameters    circle_sections_paper.yaml with the four settings of Sec. IV-A
 //   tuning        every controller tuned by one rule on training scenarios, reported held-out
 //                 (the study of docs/baselines.md; scenario NAME@V: NAME at V m/s)
 //   engagement    the lane changes started off the path: certified vs baselines vs the
@@ -226,8 +226,8 @@ void add_compare_command(CLI::App& app) {
   CLI::App* parameters =
       compare->add_subcommand("parameters", "circle_sections with the settings of Sec. IV-A");
   parameters->callback([options] {
-    emit(run_parameter_comparison(options->scenario_directory + "/circle_sections.yaml"), *options,
-         "parameter_radar");
+    emit(run_parameter_comparison(options->scenario_directory + "/circle_sections_paper.yaml"),
+         *options, "parameter_radar");
   });
   CLI::App* tuning = compare->add_subcommand(
       "tuning", "every controller tuned by one rule, reported on held-out scenarios");

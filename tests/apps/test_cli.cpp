@@ -223,6 +223,15 @@ TEST_F(Cli, HugeCountsAreRefusedWithTheOption) {
 }
 
 // Defect 8: a sweep whose every row fails is an error.
+// The paper's Sec. IV-A study runs on the shipped circle_sections_paper.yaml, as the README and
+// docs/cli.md show it: the four variations and the parameter table, every run ok.
+TEST_F(Cli, PaperVariationsRunOnTheShippedPaperScenario) {
+  const ProcessResult sweep = cli({"sweep", scenario("circle_sections_paper.yaml"), "--paper",
+                                   "--out", "variations.csv", "--set", "simulation.duration_s=5"});
+  EXPECT_EQ(sweep.exit_code, 0) << sweep.err;
+  EXPECT_NE((sweep.out + sweep.err).find("4 runs, 0 failed"), std::string::npos) << sweep.out;
+}
+
 TEST_F(Cli, SweepWithEveryRowFailingExitsOne) {
   const ProcessResult sweep = cli({"sweep", scenario("lane_change_10.yaml"), "--out", "t.csv",
                                    "--vary", "controller.k_rob=5,7"});
