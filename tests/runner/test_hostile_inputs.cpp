@@ -1,4 +1,4 @@
-// Issue 12: the hostile inputs that adversarial testing found, as one table. Every one must be
+// The hostile inputs that adversarial testing found, as one table. Every one must be
 // rejected with a message that names the file (or option), the key or line, and the rule.
 
 #include <gtest/gtest.h>
