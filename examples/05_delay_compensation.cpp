@@ -10,9 +10,9 @@ int main() {
   using namespace smoothsteer;
   const std::string file = "scenarios/lane_change_15.yaml";
   for (const char* delay : {"0", "0.05"}) {
-    const io::Scenario scenario = io::load_scenario(
+    const runner::Scenario scenario = runner::load_scenario(
         file, {"actuator.dead_time_s=0.05", std::string("controller.actuator_delay_s=") + delay});
-    const io::RunResult run = io::run_scenario(scenario);
+    const runner::RunResult run = runner::run_scenario(scenario);
     std::printf("dead time 50 ms, actuator_delay_s = %-4s s: max |e| %.3f m, stop: %s\n", delay,
                 run.metrics.max_abs_rear_error_m, run.simulation.stop_reason.c_str());
   }

@@ -89,7 +89,7 @@ std::shared_ptr<const Path> load_path_file(const std::string& file) {
   io::ConfigSection section(scenario ? root["path"] : root, scenario ? "path" : "", file);
   const auto slash = file.find_last_of('/');
   const std::string directory = slash == std::string::npos ? "." : file.substr(0, slash);
-  auto path = io::make_path(section, directory);
+  auto path = runner::make_path(section, directory);
   section.finish();
   return path;
 }

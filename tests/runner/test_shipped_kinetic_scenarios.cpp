@@ -18,7 +18,7 @@
 #include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 namespace {
 
 using testing::source_dir;
@@ -129,4 +129,4 @@ TEST(ShippedKineticScenarios, DegradeGracefullyWithTheObserverOffByTwentyPercent
 }
 
 }  // namespace
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner
