@@ -1,8 +1,8 @@
 // update() cost of every comparison controller next to the proposed one, in ns per call, on a
 // circle of radius 40 m at 10 m/s and 50 Hz (state advanced by the kinematic model each call).
-// `certified` is the study's certified lead-wheel controller (issue 9): a ScheduledController
-// with the feedforward schedule for the shipped car's limits on this circle, behind the same
-// saturation, so that its cost and the MPC's come from one run. `limiter/*` is the
+// `certified` is the study's certified lead-wheel controller (docs/baselines.md): a
+// ScheduledController with the feedforward schedule for the shipped car's limits on this circle,
+// behind the same saturation, so that its cost and the MPC's come from one run. `limiter/*` is the
 // second-order limiter alone (SteeringSaturator::apply) at the car's limits and 100 Hz, on a
 // command that keeps the limits (passes unchanged) and on noise that it clamps every call.
 

@@ -20,10 +20,10 @@ using namespace smoothsteer;
 
 void run_scenario_with(benchmark::State& state, const std::string& file,
                        const std::vector<std::string>& overrides) {
-  const io::Scenario scenario = io::load_scenario(file, overrides);
+  const runner::Scenario scenario = runner::load_scenario(file, overrides);
   double steps = 0.0, evaluations = 0.0;
   for (auto _ : state) {
-    const io::RunResult result = io::run_scenario(scenario);
+    const runner::RunResult result = runner::run_scenario(scenario);
     steps = result.metrics.steps;
     evaluations = static_cast<double>(result.simulation.model_evaluations);
     benchmark::DoNotOptimize(result.metrics.max_abs_rear_error_m);

@@ -33,7 +33,7 @@ void BM_Schedule60Speeds(benchmark::State& state) {
 BENCHMARK(BM_Schedule60Speeds)->Unit(benchmark::kMillisecond)->Repetitions(3);
 
 // What `smoothsteer tune --certificate box` computes for 60 speeds: the map (shipped for the
-// default options, src/tuning/static_map_table.inc) and the schedule. Issue 12 item 4: < 40 ms.
+// default options, src/tuning/static_map_table.inc) and the schedule; the aim is < 40 ms.
 void BM_TuneBox60Speeds(benchmark::State& state) {
   const std::vector<double> speeds = speed_grid(0.5, 30.0, 0.5);
   for (auto _ : state) {

@@ -18,8 +18,8 @@ int main() {
   for (const auto& [label, overrides] : variants) {
     std::vector<std::string> all = overrides;
     all.push_back("actuator.dead_time_s=0.05");
-    const io::Scenario scenario = io::load_scenario(file, all);
-    const io::RunResult run = io::run_scenario(scenario);
+    const runner::Scenario scenario = runner::load_scenario(file, all);
+    const runner::RunResult run = runner::run_scenario(scenario);
     std::printf("dead time 50 ms, %-7s delay compensation: max |e| %.3f m, stop: %s\n", label,
                 run.metrics.max_abs_rear_error_m, run.simulation.stop_reason.c_str());
   }

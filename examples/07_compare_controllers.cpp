@@ -20,8 +20,9 @@ int main() {
     std::vector<std::string> overrides;
     if (!name.empty())
       overrides.push_back("controller={type: " + name + ", nominal_speed_mps: 15}");
-    const io::Scenario scenario = io::load_scenario("scenarios/lane_change_15.yaml", overrides);
-    const io::RunResult run = io::run_scenario(scenario);
+    const runner::Scenario scenario =
+        runner::load_scenario("scenarios/lane_change_15.yaml", overrides);
+    const runner::RunResult run = runner::run_scenario(scenario);
     const Metrics& m = run.metrics;
     std::printf("%-22s %12.3f %16.3f %14.1f\n", run.controller_name.c_str(), m.max_abs_rear_error_m,
                 m.held_rate_max_radps, 100.0 * m.held_rate_violations / m.steps);

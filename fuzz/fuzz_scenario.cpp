@@ -7,6 +7,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const bool registered = (smoothsteer::register_comparison_controllers(), true);
   (void)registered;
   const std::string file = smoothsteer::fuzz::write_scratch("scenario.yaml", data, size);
-  smoothsteer::fuzz::expect_accept_or_reject([&] { smoothsteer::io::load_scenario(file); });
+  smoothsteer::fuzz::expect_accept_or_reject([&] { smoothsteer::runner::load_scenario(file); });
   return 0;
 }

@@ -20,7 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::string line; std::getline(lines, line) && overrides.size() < 16;) {
     overrides.push_back(line);
   }
-  fuzz::expect_accept_or_reject(
-      [&] { io::load_scenario((fuzz::scratch_directory() / "base.yaml").string(), overrides); });
+  fuzz::expect_accept_or_reject([&] {
+    runner::load_scenario((fuzz::scratch_directory() / "base.yaml").string(), overrides);
+  });
   return 0;
 }

@@ -44,7 +44,7 @@ inline void write_scratch(const std::string& name, const std::string& text) {
 }
 
 //! Runs `body`; a rejected input (std::exception with a message) is fine, a bad_alloc is a bug:
-//! every count the input controls is capped (issue 12, defect 3).
+//! every count the input controls is capped.
 template <typename Body>
 void expect_accept_or_reject(Body&& body) {
   try {

@@ -15,6 +15,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string file = fuzz::write_scratch("vehicle.yaml", data, size);
   fuzz::expect_accept_or_reject([&] { io::load_vehicle_limits(file); });
   fuzz::expect_accept_or_reject(
-      [&] { io::load_scenario((fuzz::scratch_directory() / "with_vehicle.yaml").string()); });
+      [&] { runner::load_scenario((fuzz::scratch_directory() / "with_vehicle.yaml").string()); });
   return 0;
 }

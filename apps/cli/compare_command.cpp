@@ -68,21 +68,21 @@ std::vector<std::string> plant_overrides(const std::string& plant) {
   return {"model=" + plant};
 }
 
-std::vector<io::Scenario> load_scenarios(const CompareOptions& options,
-                                         const std::vector<std::string>& names,
-                                         const std::string& plant = "") {
-  std::vector<io::Scenario> scenarios;
+std::vector<runner::Scenario> load_scenarios(const CompareOptions& options,
+                                             const std::vector<std::string>& names,
+                                             const std::string& plant = "") {
+  std::vector<runner::Scenario> scenarios;
   for (const std::string& spec : names) {
     const std::size_t at = spec.find('@');
     const std::string file = options.scenario_directory + "/" + spec.substr(0, at) + ".yaml";
     std::vector<std::string> overrides = plant_overrides(plant);
     if (at == std::string::npos) {
-      scenarios.push_back(io::load_scenario(file, overrides));
+      scenarios.push_back(runner::load_scenario(file, overrides));
       continue;
     }
     const std::string speed = spec.substr(at + 1);
     overrides.push_back("speed={initial_mps: " + speed + ", final_mps: " + speed + "}");
-    io::Scenario scenario = io::load_scenario(file, overrides);
+    runner::Scenario scenario = runner::load_scenario(file, overrides);
     scenario.name = spec;
     scenarios.push_back(std::move(scenario));
   }

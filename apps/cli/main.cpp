@@ -12,8 +12,8 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"smoothsteer: n-smooth, differentially bounded path-tracking control"};
-  app.set_version_flag("--version", "smoothsteer " + smoothsteer::io::tool_version() + " (commit " +
-                                        smoothsteer::io::tool_commit() + ")");
+  app.set_version_flag("--version", "smoothsteer " + smoothsteer::runner::tool_version() +
+                                        " (commit " + smoothsteer::runner::tool_commit() + ")");
   app.require_subcommand(1);
   // Scenario files may name every comparison controller (docs/baselines.md).
   smoothsteer::register_comparison_controllers();

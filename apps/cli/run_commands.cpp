@@ -37,8 +37,8 @@ struct RunOptions {
 void run(const RunOptions& options) {
   io::OutputDirectory out(options.out, "--out");
   const std::string script = options.plot ? find_plot_script() : std::string();
-  const io::Scenario scenario = io::load_scenario(options.scenario, options.overrides);
-  const io::RunResult result = io::run_scenario(scenario, out);
+  const runner::Scenario scenario = runner::load_scenario(options.scenario, options.overrides);
+  const runner::RunResult result = runner::run_scenario(scenario, out);
   const Metrics& m = result.metrics;
   std::printf("%s: %d steps, stop: %s, reached: %s (t = %.2f s, s = %.2f m)\n",
               scenario.name.c_str(), m.steps, result.simulation.stop_reason.c_str(),
@@ -82,7 +82,7 @@ void list(const std::string& directory) {
   std::sort(files.begin(), files.end());
   for (const fs::path& file : files) {
     try {
-      const io::Scenario s = io::load_scenario(file.string());
+      const runner::Scenario s = runner::load_scenario(file.string());
       std::printf("%-28s %s\n", file.filename().string().c_str(), s.description.c_str());
     } catch (const std::exception& error) {
       std::printf("%-28s INVALID: %s\n", file.filename().string().c_str(), error.what());
@@ -102,28 +102,28 @@ struct SweepOptions {
 void sweep(const SweepOptions& options) {
   std::vector<std::vector<std::string>> sets;
   if (options.paper) {
-    sets = io::paper_variations(io::load_scenario(options.scenario, options.overrides));
+    sets = runner::paper_variations(runner::load_scenario(options.scenario, options.overrides));
   }
   if (!options.vary.empty()) {
-    std::vector<io::SweepAxis> axes;
-    for (const std::string& v : options.vary) axes.push_back(io::parse_sweep_axis(v));
-    const auto grid = io::sweep_grid(axes);
+    std::vector<runner::SweepAxis> axes;
+    for (const std::string& v : options.vary) axes.push_back(runner::parse_sweep_axis(v));
+    const auto grid = runner::sweep_grid(axes);
     sets.insert(sets.end(), grid.begin(), grid.end());
   }
   if (sets.empty()) throw std::runtime_error("sweep: give --vary key=v1,v2,... and/or --paper");
-  if (sets.size() > io::max_sweep_rows) {
+  if (sets.size() > runner::max_sweep_rows) {
     throw std::runtime_error("sweep: " + std::to_string(sets.size()) + " runs; at most " +
-                             std::to_string(io::max_sweep_rows));
+                             std::to_string(runner::max_sweep_rows));
   }
   io::require_regular_file_or_absent(options.out, "--out");
-  const auto rows = io::run_sweep(options.scenario, options.overrides, sets, options.jobs,
-                                  [](int done, int total) {
-                                    std::fprintf(stderr, "\rsweep: %d/%d runs done", done, total);
-                                    if (done == total) std::fprintf(stderr, "\n");
-                                  });
+  const auto rows = runner::run_sweep(
+      options.scenario, options.overrides, sets, options.jobs, [](int done, int total) {
+        std::fprintf(stderr, "\rsweep: %d/%d runs done", done, total);
+        if (done == total) std::fprintf(stderr, "\n");
+      });
   const fs::path out(options.out);
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  io::write_file_atomically(options.out, io::sweep_csv(rows), "--out");
+  io::write_file_atomically(options.out, runner::sweep_csv(rows), "--out");
   std::size_t failed = 0;
   for (const auto& row : rows) failed += row.ok ? 0 : 1;
   std::printf("wrote %s (%zu runs, %zu failed)\n", options.out.c_str(), rows.size(), failed);

@@ -89,7 +89,7 @@ std::shared_ptr<const Path> load_path_file(const std::string& file) {
   io::ConfigSection section(scenario ? root["path"] : root, scenario ? "path" : "", file);
   const auto slash = file.find_last_of('/');
   const std::string directory = slash == std::string::npos ? "." : file.substr(0, slash);
-  auto path = io::make_path(section, directory);
+  auto path = runner::make_path(section, directory);
   section.finish();
   return path;
 }
@@ -154,13 +154,6 @@ void add_tune_command(CLI::App& app) {
                    "steering rate limit [rad/s]; overrides the vehicle file");
   tune->add_option("--max-steering-acceleration", arguments->max_steering_acceleration,
                    "steering acceleration limit [rad/s^2]; overrides the vehicle file");
-  tune->add_option("--max-longitudinal-acceleration",
-                   arguments->options.max_longitudinal_acceleration_mps2,
-                   "largest |dv/dt| to cover [m/s^2] (adds |dv/dt| delta' to d2(delta)/dt2)")
-      ->capture_default_str();
-  tune->add_option("--min-lead-curvature", arguments->options.min_lead_curvature_bound,
-                   "smallest admissible kbar_l [1/m]")
-      ->capture_default_str();
   tune->add_option("--certificate", arguments->certificate,
                    "feedforward (curvature feedforward, tight certificate) or box (the paper's "
                    "worst case over the invariant box)")
@@ -169,25 +162,34 @@ void add_tune_command(CLI::App& app) {
   tune->add_option("--path", arguments->path_file,
                    "scenario or path YAML whose path sets --path-curvature and "
                    "--path-curvature-rate");
-  tune->add_option("--path-curvature", arguments->options.path_curvature_bound,
-                   "largest reference-path curvature [1/m]: the feedforward covers it (box: "
-                   "k_rob covers it)")
-      ->capture_default_str();
   tune->add_option("--path-curvature-rate", arguments->options.path_curvature_rate_bound,
                    "largest |d kappa/ds| of the path [1/m^2] (default: unknown, inf)");
-  tune->add_option("--feedforward-headroom", arguments->options.feedforward_headroom,
-                   "kbar_ff = this times the path's peak curvature, in [1, 3]: room for the "
-                   "rear-axle target and the dynamics preview")
-      ->capture_default_str();
-  tune->add_option("--feedforward-rate-share", arguments->options.feedforward_rate_share,
-                   "largest share of the certified rate budget the feedforward's curvature rate "
-                   "may take (the switching part gets the rest)")
-      ->capture_default_str();
   tune->add_option("--max-lateral-acceleration", arguments->max_lateral_acceleration,
                    "friction limit mu g [m/s^2]; default from the vehicle file's tires");
-  tune->add_option("--disturbance", arguments->options.matched_disturbance_curvature,
-                   "matched disturbance kappa_d k_rob must cover [1/m]")
-      ->capture_default_str();
+  // The TuningOptions fields set from the command line, each shown with its default.
+  TuningOptions& o = arguments->options;
+  const struct {
+    const char* flag;
+    double& value;
+    const char* help;
+  } tuning_options[] = {
+      {"--max-longitudinal-acceleration", o.max_longitudinal_acceleration_mps2,
+       "largest |dv/dt| to cover [m/s^2] (adds |dv/dt| delta' to d2(delta)/dt2)"},
+      {"--min-lead-curvature", o.min_lead_curvature_bound, "smallest admissible kbar_l [1/m]"},
+      {"--path-curvature", o.path_curvature_bound,
+       "largest reference-path curvature [1/m]: the feedforward covers it (box: k_rob covers it)"},
+      {"--feedforward-headroom", o.feedforward_headroom,
+       "kbar_ff = this times the path's peak curvature, in [1, 3]: room for the rear-axle target "
+       "and the dynamics preview"},
+      {"--feedforward-rate-share", o.feedforward_rate_share,
+       "largest share of the certified rate budget the feedforward's curvature rate may take "
+       "(the switching part gets the rest)"},
+      {"--disturbance", o.matched_disturbance_curvature,
+       "matched disturbance kappa_d k_rob must cover [1/m]"},
+  };
+  for (const auto& option : tuning_options) {
+    tune->add_option(option.flag, option.value, option.help)->capture_default_str();
+  }
   tune->callback([arguments] { run_tune(*arguments); });
 }
 

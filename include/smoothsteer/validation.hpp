@@ -12,6 +12,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -54,6 +55,13 @@ inline void throw_if_violated(const std::optional<Violation>& v) {
   if (v) throw std::invalid_argument(describe(*v));
 }
 
+inline bool positive_finite(double value) noexcept {
+  return std::isfinite(value) && value > 0.0;
+}
+inline bool non_negative_finite(double value) noexcept {
+  return std::isfinite(value) && value >= 0.0;
+}
+
 //! The shared helper behind every first_violation(): checks the rules in order and keeps the
 //! first one broken. noexcept and allocation free, so is_valid() can run in real time.
 class RuleChecker {
@@ -63,6 +71,23 @@ class RuleChecker {
   void require(bool ok, const char* field, double value, const char* rule,
                double reference = std::numeric_limits<double>::quiet_NaN()) noexcept {
     if (!ok && !first_) first_ = Violation{owner_, "", field, value, rule, reference};
+  }
+  //! A field's name and value, for the rules that name a list of fields.
+  struct Field {
+    const char* name;
+    double value;
+  };
+  //! The two rules most fields follow, each message stated once here; the fields are checked
+  //! in the order given.
+  void require_positive(std::initializer_list<Field> fields) noexcept {
+    for (const Field& f : fields) {
+      require(positive_finite(f.value), f.name, f.value, "must be finite and > 0");
+    }
+  }
+  void require_non_negative(std::initializer_list<Field> fields) noexcept {
+    for (const Field& f : fields) {
+      require(non_negative_finite(f.value), f.name, f.value, "must be finite and >= 0");
+    }
   }
   //! A nested struct's first violation, with its own owner.
   void include(const std::optional<Violation>& nested) noexcept {
@@ -74,12 +99,5 @@ class RuleChecker {
   const char* owner_;
   std::optional<Violation> first_;
 };
-
-inline bool positive_finite(double value) noexcept {
-  return std::isfinite(value) && value > 0.0;
-}
-inline bool non_negative_finite(double value) noexcept {
-  return std::isfinite(value) && value >= 0.0;
-}
 
 }  // namespace smoothsteer

@@ -38,7 +38,7 @@ void set_attributes(py::object& target, const py::kwargs& keywords) {
 PYBIND11_MODULE(_smoothsteer, m) {
   using namespace smoothsteer::python;
   m.doc() = "smoothsteer: n-smooth, differentially bounded path-tracking control (SI units)";
-  m.attr("__version__") = smoothsteer::io::tool_version();
+  m.attr("__version__") = smoothsteer::runner::tool_version();
   // pybind11 looks numpy's C API up once, in a function-local static, on the first array it
   // makes. Made from two threads at once, that look-up deadlocks (one thread holds the GIL and
   // waits for the static, the other holds the static and waits for the GIL in numpy's import).

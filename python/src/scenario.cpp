@@ -27,14 +27,14 @@ py::object from_json(const nlohmann::json& value) {
   return py::module_::import("json").attr("loads")(text);
 }
 
-//! Simulates as io::run_scenario(scenario, OutputDirectory&) does, keeping the rows in memory.
-py::tuple run(const io::Scenario& scenario) {
+//! Simulates as runner::run_scenario(scenario, OutputDirectory&) does, keeping the rows in memory.
+py::tuple run(const runner::Scenario& scenario) {
   std::vector<TraceRow> rows;
-  io::RunResult result;
+  runner::RunResult result;
   {
     py::gil_scoped_release unlocked;  // a run takes from milliseconds to seconds
-    const std::unique_ptr<SteeringController> controller = io::make_controller(scenario);
-    const std::unique_ptr<VehicleModel> model = io::make_vehicle_model(scenario);
+    const std::unique_ptr<SteeringController> controller = runner::make_controller(scenario);
+    const std::unique_ptr<VehicleModel> model = runner::make_vehicle_model(scenario);
     MetricsAccumulator metrics(scenario.metrics);
     result.simulation =
         simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
@@ -55,14 +55,14 @@ py::tuple run(const io::Scenario& scenario) {
     }
     trace[names[column]] = values;
   }
-  return py::make_tuple(trace, from_json(io::summary_json(scenario, result)));
+  return py::make_tuple(trace, from_json(runner::summary_json(scenario, result)));
 }
 
 //! The certified bounds of the scenario's controller if it is a (fixed) LeadWheelController:
 //! rate [rad/m] and acceleration [rad/m^2] per metre travelled, and the box bound of the
 //! invariant sets [rad/m]; None for any other controller (a schedule's bounds are in its CSV).
-py::object certificate(const io::Scenario& scenario) {
-  const std::unique_ptr<SteeringController> controller = io::make_controller(scenario);
+py::object certificate(const runner::Scenario& scenario) {
+  const std::unique_ptr<SteeringController> controller = runner::make_controller(scenario);
   const auto* lead_wheel = dynamic_cast<const LeadWheelController*>(controller.get());
   if (!lead_wheel) return py::none();
   py::dict bounds;
@@ -75,29 +75,29 @@ py::object certificate(const io::Scenario& scenario) {
 }  // namespace
 
 void bind_scenario(py::module_& m) {
-  py::class_<io::Scenario, std::shared_ptr<io::Scenario>>(
+  py::class_<runner::Scenario, std::shared_ptr<runner::Scenario>>(
       m, "Scenario", "A loaded scenario file (docs/scenarios.md), every default filled in.")
-      .def_readonly("name", &io::Scenario::name)
-      .def_readonly("description", &io::Scenario::description)
-      .def_readonly("file", &io::Scenario::file)
-      .def_readonly("model", &io::Scenario::model, "'dynamic' or 'kinematic'")
-      .def_readonly("vehicle_name", &io::Scenario::vehicle_name)
-      .def_readonly("overrides", &io::Scenario::overrides)
+      .def_readonly("name", &runner::Scenario::name)
+      .def_readonly("description", &runner::Scenario::description)
+      .def_readonly("file", &runner::Scenario::file)
+      .def_readonly("model", &runner::Scenario::model, "'dynamic' or 'kinematic'")
+      .def_readonly("vehicle_name", &runner::Scenario::vehicle_name)
+      .def_readonly("overrides", &runner::Scenario::overrides)
       .def_property_readonly(
-          "path", [](const io::Scenario& s) { return std::const_pointer_cast<Path>(s.path); },
+          "path", [](const runner::Scenario& s) { return std::const_pointer_cast<Path>(s.path); },
           "the reference Path")
       .def_property_readonly(
           "start",
-          [](const io::Scenario& s) {
+          [](const runner::Scenario& s) {
             return py::make_tuple(s.start.position.x, s.start.position.y, s.start.heading_rad);
           },
           "rear-axle start pose (x [m], y [m], psi [rad])")
       .def_property_readonly(
-          "parameters", [](const io::Scenario& s) { return from_json(s.parameters); },
+          "parameters", [](const runner::Scenario& s) { return from_json(s.parameters); },
           "the resolved parameter set as a dict (summary.json's "
           "'parameters')");
 
-  m.def("_load_scenario", &io::load_scenario, py::arg("file"), py::arg("overrides"));
+  m.def("_load_scenario", &runner::load_scenario, py::arg("file"), py::arg("overrides"));
   m.def("_run_scenario", &run, py::arg("scenario"));
   m.def("scenario_certificate", &certificate, py::arg("scenario"),
         "Certified bounds of a scenario's lead-wheel controller, per metre travelled: a dict "

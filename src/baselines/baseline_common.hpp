@@ -1,6 +1,6 @@
 #pragma once
 // The one helper of the comparison controllers (internal): parameter checks
-// (parameter_checks.hpp), input validation, reset, rear-axle tracking and filling the output.
+// (parameter_checks.hpp), input validation, rear-axle tracking and filling the output.
 
 #include <algorithm>
 #include <cmath>
@@ -17,18 +17,6 @@ inline bool valid_input(const ControllerInput& input) noexcept {
          std::isfinite(input.heading_rad) && std::isfinite(input.speed_mps) &&
          std::isfinite(input.acceleration_mps2) && std::isfinite(input.period_s) &&
          input.period_s > 0.0;
-}
-
-//! Restarts a controller from the measured steering angle (clamped to +-bound, 0 if not
-//! finite) with cold projection hints.
-inline void reset_tracking(double measured_steering_angle_rad, double& steering,
-                           ProjectionHint& rear_hint, ProjectionHint& front_hint,
-                           double bound = HUGE_VAL) noexcept {
-  steering = std::isfinite(measured_steering_angle_rad)
-                 ? std::clamp(measured_steering_angle_rad, -bound, bound)
-                 : 0.0;
-  rear_hint.reset();
-  front_hint.reset();
 }
 
 //! Rear-axle tracking state relative to the path, for forward driving.

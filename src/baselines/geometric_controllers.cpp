@@ -11,24 +11,14 @@ namespace smoothsteer {
 
 std::optional<Violation> StanleyParameters::first_violation() const noexcept {
   RuleChecker check("StanleyParameters");
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
-  check.require(positive_finite(gain_per_s), "gain_per_s", gain_per_s, "must be finite and > 0");
-  check.require(positive_finite(softening_mps), "softening_mps", softening_mps,
-                "must be finite and > 0");
+  check.require_positive(
+      {{"wheelbase_m", wheelbase_m}, {"gain_per_s", gain_per_s}, {"softening_mps", softening_mps}});
   return check.first();
 }
 
 StanleyController::StanleyController(const StanleyParameters& parameters,
                                      std::shared_ptr<const Path> path)
-    : parameters_(parameters), path_(std::move(path)) {
-  parameters_.validate();
-  if (!path_) throw std::invalid_argument("StanleyController: path is null; a path is required");
-  reset(0.0);
-}
-
-void StanleyController::reset(double measured_steering_angle_rad) noexcept {
-  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
-}
+    : PathTrackingBaseline(parameters, std::move(path), "StanleyController") {}
 
 Status StanleyController::compute_command(const ControllerInput& input,
                                           ControllerOutput& output) noexcept {
@@ -53,9 +43,7 @@ Status StanleyController::compute_command(const ControllerInput& input,
 
 std::optional<Violation> PurePursuitParameters::first_violation() const noexcept {
   RuleChecker check("PurePursuitParameters");
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
-  check.require(positive_finite(min_lookahead_m), "min_lookahead_m", min_lookahead_m,
-                "must be finite and > 0");
+  check.require_positive({{"wheelbase_m", wheelbase_m}, {"min_lookahead_m", min_lookahead_m}});
   check.require(std::isfinite(lookahead_time_s) && lookahead_time_s >= 0.0, "lookahead_time_s",
                 lookahead_time_s, "must be finite and >= 0");
   check.require(std::isfinite(max_lookahead_m) && max_lookahead_m >= min_lookahead_m,
@@ -65,17 +53,7 @@ std::optional<Violation> PurePursuitParameters::first_violation() const noexcept
 
 PurePursuitController::PurePursuitController(const PurePursuitParameters& parameters,
                                              std::shared_ptr<const Path> path)
-    : parameters_(parameters), path_(std::move(path)) {
-  parameters_.validate();
-  if (!path_) {
-    throw std::invalid_argument("PurePursuitController: path is null; a path is required");
-  }
-  reset(0.0);
-}
-
-void PurePursuitController::reset(double measured_steering_angle_rad) noexcept {
-  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
-}
+    : PathTrackingBaseline(parameters, std::move(path), "PurePursuitController") {}
 
 double PurePursuitController::lookahead_m(double speed_mps) const noexcept {
   return std::clamp(

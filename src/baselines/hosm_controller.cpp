@@ -27,23 +27,20 @@ std::optional<Violation> HosmParameters::first_violation() const noexcept {
                 "gives alpha = G delta_bar' - F <= 0 (lower psi_bar or delta_bar, or raise "
                 "delta_bar'): alpha =",
                 alpha());
-  check.require(positive_finite(substep_m), "substep_m", substep_m, "must be finite and > 0");
+  check.require_positive({{"substep_m", substep_m}});
   check.require(max_substeps >= 1 && max_substeps <= 10000, "max_substeps", max_substeps,
                 "must be in [1, 10000]");
   return check.first();
 }
 
 HosmController::HosmController(const HosmParameters& parameters, std::shared_ptr<const Path> path)
-    : parameters_(parameters), path_(std::move(path)) {
-  parameters_.validate();
-  if (!path_) throw std::invalid_argument("HosmController: path is null; a path is required");
+    : PathTrackingBaseline(parameters, std::move(path), "HosmController") {
   alpha_ = parameters_.alpha();
   reset(0.0);
 }
 
 void HosmController::reset(double measured_steering_angle_rad) noexcept {
-  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_,
-                         parameters_.steering_angle_bound_rad);
+  restart(measured_steering_angle_rad, parameters_.steering_angle_bound_rad);
 }
 
 double HosmController::steering_rate_per_meter(double lateral_error_m, double heading_error_rad,

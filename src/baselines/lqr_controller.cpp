@@ -10,15 +10,12 @@ namespace smoothsteer {
 
 std::optional<Violation> LqrParameters::first_violation() const noexcept {
   RuleChecker check("LqrParameters");
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require_positive({{"wheelbase_m", wheelbase_m}});
   check.require(positive_finite(weight_lateral), "weight_lateral", weight_lateral,
                 "must be finite and > 0 (else e is not stabilised)");
   check.require(std::isfinite(weight_heading) && weight_heading >= 0.0, "weight_heading",
                 weight_heading, "must be finite and >= 0");
-  check.require(positive_finite(weight_steering), "weight_steering", weight_steering,
-                "must be finite and > 0");
-  check.require(positive_finite(min_speed_mps), "min_speed_mps", min_speed_mps,
-                "must be finite and > 0");
+  check.require_positive({{"weight_steering", weight_steering}, {"min_speed_mps", min_speed_mps}});
   return check.first();
 }
 
@@ -34,15 +31,7 @@ LqrGains lqr_gains(const LqrParameters& parameters, double speed_mps) noexcept {
 }
 
 LqrController::LqrController(const LqrParameters& parameters, std::shared_ptr<const Path> path)
-    : parameters_(parameters), path_(std::move(path)) {
-  parameters_.validate();
-  if (!path_) throw std::invalid_argument("LqrController: path is null; a path is required");
-  reset(0.0);
-}
-
-void LqrController::reset(double measured_steering_angle_rad) noexcept {
-  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_);
-}
+    : PathTrackingBaseline(parameters, std::move(path), "LqrController") {}
 
 Status LqrController::compute_command(const ControllerInput& input,
                                       ControllerOutput& output) noexcept {

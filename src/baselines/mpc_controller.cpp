@@ -13,38 +13,26 @@ namespace smoothsteer {
 
 std::optional<Violation> MpcParameters::first_violation() const noexcept {
   RuleChecker check("MpcParameters");
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
-  check.require(positive_finite(steering_time_constant_s), "steering_time_constant_s",
-                steering_time_constant_s, "must be finite and > 0");
+  check.require_positive(
+      {{"wheelbase_m", wheelbase_m}, {"steering_time_constant_s", steering_time_constant_s}});
   check.require(horizon_steps >= 2 && horizon_steps <= 200, "horizon_steps", horizon_steps,
                 "must be in [2, 200]");
-  check.require(positive_finite(prediction_step_s), "prediction_step_s", prediction_step_s,
-                "must be finite and > 0");
-  check.require(non_negative_finite(weight_lateral_error), "weight_lateral_error",
-                weight_lateral_error, "must be finite and >= 0");
-  check.require(non_negative_finite(weight_heading_error), "weight_heading_error",
-                weight_heading_error, "must be finite and >= 0");
-  check.require(non_negative_finite(weight_heading_error_squared_speed),
-                "weight_heading_error_squared_speed", weight_heading_error_squared_speed,
-                "must be finite and >= 0");
+  check.require_positive({{"prediction_step_s", prediction_step_s}});
+  check.require_non_negative(
+      {{"weight_lateral_error", weight_lateral_error},
+       {"weight_heading_error", weight_heading_error},
+       {"weight_heading_error_squared_speed", weight_heading_error_squared_speed}});
   // r > 0 keeps G'G positive definite whatever the other weights.
   check.require(positive_finite(weight_steering_input), "weight_steering_input",
                 weight_steering_input, "must be finite and > 0 (keeps the QP strictly convex)");
-  check.require(non_negative_finite(weight_steering_input_squared_speed),
-                "weight_steering_input_squared_speed", weight_steering_input_squared_speed,
-                "must be finite and >= 0");
-  check.require(non_negative_finite(weight_steering_rate), "weight_steering_rate",
-                weight_steering_rate, "must be finite and >= 0");
-  check.require(non_negative_finite(weight_steering_acceleration), "weight_steering_acceleration",
-                weight_steering_acceleration, "must be finite and >= 0");
-  check.require(non_negative_finite(weight_terminal_lateral_error), "weight_terminal_lateral_error",
-                weight_terminal_lateral_error, "must be finite and >= 0");
-  check.require(non_negative_finite(weight_terminal_heading_error), "weight_terminal_heading_error",
-                weight_terminal_heading_error, "must be finite and >= 0");
-  check.require(non_negative_finite(zero_feedforward_angle_rad), "zero_feedforward_angle_rad",
-                zero_feedforward_angle_rad, "must be finite and >= 0");
-  check.require(positive_finite(min_speed_mps), "min_speed_mps", min_speed_mps,
-                "must be finite and > 0");
+  check.require_non_negative(
+      {{"weight_steering_input_squared_speed", weight_steering_input_squared_speed},
+       {"weight_steering_rate", weight_steering_rate},
+       {"weight_steering_acceleration", weight_steering_acceleration},
+       {"weight_terminal_lateral_error", weight_terminal_lateral_error},
+       {"weight_terminal_heading_error", weight_terminal_heading_error},
+       {"zero_feedforward_angle_rad", zero_feedforward_angle_rad}});
+  check.require_positive({{"min_speed_mps", min_speed_mps}});
   check.include(limits.first_violation());
   check.require(limits.angle_rad < pi / 2.0, "limits.angle_rad", limits.angle_rad,
                 "must be < pi/2 (tan delta of the model)");
@@ -72,9 +60,7 @@ struct MpcWorkspace {
 }  // namespace detail
 
 MpcController::MpcController(const MpcParameters& parameters, std::shared_ptr<const Path> path)
-    : parameters_(parameters), path_(std::move(path)) {
-  parameters_.validate();
-  if (!path_) throw std::invalid_argument("MpcController: path is null; a path is required");
+    : PathTrackingBaseline(parameters, std::move(path), "MpcController") {
   workspace_ = std::make_unique<detail::MpcWorkspace>(parameters_);
   reset(0.0);
 }
@@ -87,10 +73,9 @@ std::span<const double> MpcController::planned_steering() const noexcept {
 
 void MpcController::reset(double measured_steering_angle_rad) noexcept {
   // Clamped, so that the constrained QP (|u_0 - u_prev| <= rate T_c) stays feasible.
-  detail::reset_tracking(measured_steering_angle_rad, previous_command_, rear_hint_, front_hint_,
-                         parameters_.limits.angle_rad);
-  steering_estimate_ = command_before_ = previous_command_;
-  workspace_->plan.setConstant(previous_command_);
+  restart(measured_steering_angle_rad, parameters_.limits.angle_rad);
+  steering_estimate_ = command_before_ = steering_;
+  workspace_->plan.setConstant(steering_);
   first_update_ = true;
 }
 
@@ -103,10 +88,10 @@ Status MpcController::compute_command(const ControllerInput& input,
   // commands (Autoware's use_steer_prediction).
   if (!first_update_) {
     const double blend = 1.0 - std::exp(-period / parameters_.steering_time_constant_s);
-    steering_estimate_ += blend * (previous_command_ - steering_estimate_);
+    steering_estimate_ += blend * (steering_ - steering_estimate_);
   }
   first_update_ = false;
-  double command = previous_command_;
+  double command = steering_;
   if (input.speed_mps >= parameters_.min_speed_mps) {
     detail::MpcWorkspace& work = *workspace_;
     const double step_length = input.speed_mps * parameters_.prediction_step_s;
@@ -118,28 +103,28 @@ Status MpcController::compute_command(const ControllerInput& input,
     const Eigen::Vector3d initial(rear.projection.lateral_error_m, rear.heading_error_rad,
                                   steering_estimate_);
     work.problem.build(parameters_, initial, input.speed_mps, work.curvatures,
-                       {previous_command_, command_before_, period});
+                       {steering_, command_before_, period});
     bool solved = work.problem.solve(work.plan);
     if (solved && work.qp) {
-      if (!work.qp->solve(work.problem.normal_matrix_lower(), work.problem.normal_rhs(),
-                          previous_command_, period, work.plan)) {
+      if (!work.qp->solve(work.problem.normal_matrix_lower(), work.problem.normal_rhs(), steering_,
+                          period, work.plan)) {
         ++solver_failures_;
       }
     }
     if (!solved) {
-      reset(previous_command_);
+      reset(steering_);
       return Status::numerical_error;
     }
     // Saturation of the applied command (Autoware clamps to steer_lim and the rate limit).
     const double angle = parameters_.limits.angle_rad;
     const double step = parameters_.limits.rate_radps * period;
-    command = std::clamp(std::clamp(work.plan(0), -angle, angle), previous_command_ - step,
-                         previous_command_ + step);
+    command =
+        std::clamp(std::clamp(work.plan(0), -angle, angle), steering_ - step, steering_ + step);
   }
-  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, command,
-                      previous_command_, rear.projection.lateral_error_m, output);
-  command_before_ = previous_command_;
-  previous_command_ = command;
+  detail::fill_output(*path_, front_hint_, input, rear, parameters_.wheelbase_m, command, steering_,
+                      rear.projection.lateral_error_m, output);
+  command_before_ = steering_;
+  steering_ = command;
   return Status::ok;
 }
 

@@ -10,11 +10,10 @@ namespace smoothsteer {
 
 std::optional<Violation> NewtonRaphsonParameters::first_violation() const noexcept {
   RuleChecker check("NewtonRaphsonParameters");
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
-  check.require(positive_finite(horizon_s), "horizon_s", horizon_s, "must be finite and > 0");
-  check.require(positive_finite(gain_per_s), "gain_per_s", gain_per_s, "must be finite and > 0");
-  check.require(positive_finite(min_speed_mps), "min_speed_mps", min_speed_mps,
-                "must be finite and > 0");
+  check.require_positive({{"wheelbase_m", wheelbase_m},
+                          {"horizon_s", horizon_s},
+                          {"gain_per_s", gain_per_s},
+                          {"min_speed_mps", min_speed_mps}});
   check.include(limits.first_violation());
   return check.first();
 }
@@ -51,17 +50,12 @@ ArcPrediction predict_arc(double steering_angle_rad, double wheelbase_m,
 
 NewtonRaphsonController::NewtonRaphsonController(const NewtonRaphsonParameters& parameters,
                                                  std::shared_ptr<const Path> path)
-    : parameters_(parameters), path_(std::move(path)) {
-  parameters_.validate();
-  if (!path_) {
-    throw std::invalid_argument("NewtonRaphsonController: path is null; a path is required");
-  }
+    : PathTrackingBaseline(parameters, std::move(path), "NewtonRaphsonController") {
   reset(0.0);
 }
 
 void NewtonRaphsonController::reset(double measured_steering_angle_rad) noexcept {
-  detail::reset_tracking(measured_steering_angle_rad, steering_, rear_hint_, front_hint_,
-                         parameters_.limits.angle_rad);
+  restart(measured_steering_angle_rad, parameters_.limits.angle_rad);
   rate_ = 0.0;
 }
 

@@ -13,7 +13,7 @@ std::optional<Violation> SteeringLimits::first_violation() const noexcept {
   RuleChecker check("SteeringLimits");
   check.require(positive_finite(angle_rad) && angle_rad < std::numbers::pi / 2.0, "angle_rad",
                 angle_rad, "must be in (0, pi/2)");
-  check.require(positive_finite(rate_radps), "rate_radps", rate_radps, "must be finite and > 0");
+  check.require_positive({{"rate_radps", rate_radps}});
   check.require(!std::isnan(acceleration_radps2) && acceleration_radps2 > 0.0,
                 "acceleration_radps2", acceleration_radps2, "must be > 0 (+inf: no limit)");
   return check.first();

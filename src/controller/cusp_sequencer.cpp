@@ -11,12 +11,9 @@
 namespace smoothsteer {
 std::optional<Violation> CuspSpeedOptions::first_violation() const noexcept {
   RuleChecker check("CuspSpeedOptions");
-  check.require(positive_finite(cruise_speed_mps), "cruise_speed_mps", cruise_speed_mps,
-                "must be finite and > 0");
-  check.require(positive_finite(deceleration_mps2), "deceleration_mps2", deceleration_mps2,
-                "must be finite and > 0");
-  check.require(positive_finite(stop_tolerance_m), "stop_tolerance_m", stop_tolerance_m,
-                "must be finite and > 0");
+  check.require_positive({{"cruise_speed_mps", cruise_speed_mps},
+                          {"deceleration_mps2", deceleration_mps2},
+                          {"stop_tolerance_m", stop_tolerance_m}});
   return check.first();
 }
 

@@ -17,8 +17,8 @@ constexpr double gravity_mps2 = 9.81;   // as load_vehicle_limits
 //! The options of the scenario's committed schedule: its template (`base`), its order and its
 //! feedforward headroom (the largest kbar_ff over the path's curvature bound; the CSV does not
 //! store the headroom, `tune --feedforward-headroom`).
-TuningOptions scenario_schedule_options(const io::Scenario& scenario) {
-  const std::unique_ptr<SteeringController> own = io::make_controller(scenario);
+TuningOptions scenario_schedule_options(const runner::Scenario& scenario) {
+  const std::unique_ptr<SteeringController> own = runner::make_controller(scenario);
   const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
   if (scheduled == nullptr) {
     throw std::invalid_argument(scenario.file + ": key 'controller.type': the certified route " +
@@ -41,7 +41,7 @@ TuningOptions scenario_schedule_options(const io::Scenario& scenario) {
 
 }  // namespace
 
-VehicleLimits vehicle_limits_of(const io::Scenario& scenario) {
+VehicleLimits vehicle_limits_of(const runner::Scenario& scenario) {
   const VehicleParameters& v = scenario.vehicle;
   VehicleLimits limits;
   limits.wheelbase_m = v.wheelbase_m();
@@ -53,7 +53,7 @@ VehicleLimits vehicle_limits_of(const io::Scenario& scenario) {
   return limits;
 }
 
-std::vector<double> certified_speed_grid(const io::Scenario& scenario) {
+std::vector<double> certified_speed_grid(const runner::Scenario& scenario) {
   const double top =
       std::max(scenario.speed.initial_speed_mps,
                scenario.speed.acceleration_mps2 > 0.0 ? scenario.speed.final_speed_mps : 0.0);
@@ -62,7 +62,7 @@ std::vector<double> certified_speed_grid(const io::Scenario& scenario) {
   return speed_grid(speed_step_mps, last, speed_step_mps);
 }
 
-TuningOptions certified_route_options(const io::Scenario& scenario,
+TuningOptions certified_route_options(const runner::Scenario& scenario,
                                       const std::vector<std::pair<std::string, double>>& knobs) {
   const TuningOptions committed = scenario_schedule_options(scenario);
   TuningOptions options;
@@ -96,13 +96,13 @@ TuningOptions certified_route_options(const io::Scenario& scenario,
 }
 
 std::unique_ptr<SteeringController> make_certified_controller(
-    const io::Scenario& scenario, const std::vector<std::pair<std::string, double>>& knobs) {
+    const runner::Scenario& scenario, const std::vector<std::pair<std::string, double>>& knobs) {
   const TuningOptions options = certified_route_options(scenario, knobs);
   GainSchedule schedule = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
                                                        certified_speed_grid(scenario));
   // The delay and the catch-up over speed as the scenario's own controller has them
   // (derived_compensation), so that the route differs from the file only in its schedule.
-  const std::unique_ptr<SteeringController> own = io::make_controller(scenario);
+  const std::unique_ptr<SteeringController> own = runner::make_controller(scenario);
   const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
   return std::make_unique<ScheduledController>(
       std::move(schedule), scenario.path,

@@ -62,7 +62,7 @@ void read_baseline_gains(const std::string& name, io::ConfigSection& section,
 
 void register_comparison_controllers() {
   for (const std::string& name : comparison_controller_names()) {
-    io::register_controller_type(
+    runner::register_controller_type(
         name,
         [name](io::ConfigSection& section, std::shared_ptr<const Path> path,
                const VehicleParameters& vehicle) -> std::unique_ptr<SteeringController> {

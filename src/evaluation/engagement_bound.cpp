@@ -1,31 +1,22 @@
 #include "smoothsteer/evaluation/engagement_bound.hpp"
-
-#include <IpIpoptApplication.hpp>
-#include <IpSolveStatistics.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 
 #include "engagement_model.hpp"
 #include "engagement_nlp.hpp"
-#include "reaching_nlp.hpp"
 #include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
 
 std::optional<Violation> EngagementBoundProblem::first_violation() const noexcept {
   RuleChecker check("EngagementBoundProblem");
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
-  check.require(positive_finite(speed_mps), "speed_mps", speed_mps, "must be finite and > 0");
+  check.require_positive({{"wheelbase_m", wheelbase_m}, {"speed_mps", speed_mps}});
   check.require(positive_finite(steering_angle_bound_rad) && steering_angle_bound_rad < pi / 2.0,
                 "steering_angle_bound_rad", steering_angle_bound_rad, "must be in (0, pi/2)");
-  check.require(positive_finite(steering_rate_bound_radps), "steering_rate_bound_radps",
-                steering_rate_bound_radps, "must be finite and > 0");
-  check.require(positive_finite(steering_acceleration_bound_radps2),
-                "steering_acceleration_bound_radps2", steering_acceleration_bound_radps2,
-                "must be finite and > 0");
+  check.require_positive(
+      {{"steering_rate_bound_radps", steering_rate_bound_radps},
+       {"steering_acceleration_bound_radps2", steering_acceleration_bound_radps2}});
   check.require(std::isfinite(start.position.x) && std::isfinite(start.position.y), "start",
                 start.position.x, "must have a finite position");
   check.require(std::isfinite(start.heading_rad), "start.heading_rad", start.heading_rad,
@@ -35,14 +26,14 @@ std::optional<Violation> EngagementBoundProblem::first_violation() const noexcep
   check.require(std::abs(initial_steering_rate_radps) <= steering_rate_bound_radps,
                 "initial_steering_rate_radps", initial_steering_rate_radps,
                 "must satisfy |r(0)| <= steering_rate_bound_radps");
-  check.require(positive_finite(duration_s), "duration_s", duration_s, "must be finite and > 0");
+  check.require_positive({{"duration_s", duration_s}});
   // The starting trajectory's inner loop needs h well below its 0.1 s time constant.
   check.require(positive_finite(time_step_s) && time_step_s <= 0.05, "time_step_s", time_step_s,
                 "must be in (0, 0.05]");
   check.require(std::isfinite(duration_s / time_step_s) && duration_s / time_step_s <= 20000.0,
                 "duration_s", duration_s, "must be at most 20000 time steps");
   check.require(max_iterations >= 1, "max_iterations", max_iterations, "must be >= 1");
-  check.require(positive_finite(tolerance), "tolerance", tolerance, "must be finite and > 0");
+  check.require_positive({{"tolerance", tolerance}});
   return check.first();
 }
 
@@ -121,36 +112,11 @@ EngagementBound solve_with(const EngagementBoundProblem& problem,
                            const detail::EngagementTrajectory& start, bool exact_hessian) {
   EngagementBound bound;
   Ipopt::SmartPtr<Ipopt::TNLP> nlp = detail::make_engagement_nlp(problem, start, bound);
-  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  app->Options()->SetIntegerValue("print_level", 0);
-  app->Options()->SetStringValue("sb", "yes");
-  app->Options()->SetStringValue("hessian_approximation",
-                                 exact_hessian ? "exact" : "limited-memory");
-  app->Options()->SetStringValue("mu_strategy", "adaptive");
-  app->Options()->SetNumericValue("tol", problem.tolerance);
-  app->Options()->SetIntegerValue("max_iter", problem.max_iterations);
-  // The optimum is degenerate (e(t) is free below z away from its peaks), so the last digits can
-  // come slowly: accept optimality to 1e-6 at feasibility 1e-8, and let the re-simulation
-  // (resimulate_engagement_bound) judge the result.
-  app->Options()->SetNumericValue("acceptable_tol", 1e-6);
-  app->Options()->SetNumericValue("acceptable_constr_viol_tol", 1e-8);
-  app->Options()->SetIntegerValue("acceptable_iter", 10);
-  if (problem.check_derivatives) {
-    app->Options()->SetStringValue("derivative_test", "second-order");
-    app->Options()->SetIntegerValue("print_level", 4);
-  }
-  const std::lock_guard lock(detail::ipopt_mutex());
-  if (app->Initialize() != Ipopt::Solve_Succeeded) {
-    bound.solver_status = "Ipopt initialisation failed";
-    return bound;
-  }
-  const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
-  bound.solver_status = detail::status_text(status);
-  bound.converged = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
-  if (Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app->Statistics();
-      Ipopt::IsValid(statistics)) {
-    bound.iterations = statistics->IterationCount();
-  }
+  const detail::IpoptOutcome outcome = detail::solve_nlp(
+      nlp, {problem.tolerance, problem.max_iterations, exact_hessian, problem.check_derivatives});
+  bound.solver_status = outcome.status;
+  bound.converged = outcome.converged;
+  bound.iterations = outcome.iterations;
   return bound;
 }
 

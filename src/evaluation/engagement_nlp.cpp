@@ -1,6 +1,7 @@
 #include "engagement_nlp.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "engagement_model.hpp"
 
@@ -19,7 +20,7 @@ constexpr double unbounded = 1e19;
 //   delta       delta_{k+1} - delta_k - h/2 (r_k + r_{k+1}),
 //   r           r_{k+1} - r_k - h u_k,
 // then 2 rows per node, e_k - z <= 0 and -e_k - z <= 0.
-class EngagementNlp final : public Ipopt::TNLP {
+class EngagementNlp final : public MinimumOfVariableNlp {
  public:
   EngagementNlp(const EngagementBoundProblem& problem, const EngagementTrajectory& start,
                 EngagementBound& result)
@@ -77,17 +78,6 @@ class EngagementNlp final : public Ipopt::TNLP {
     return true;
   }
 
-  bool eval_f(Index, const Number* x, bool, Number& objective) override {
-    objective = x[z_index()];
-    return true;
-  }
-
-  bool eval_grad_f(Index n, const Number*, bool, Number* gradient) override {
-    std::fill(gradient, gradient + n, 0.0);
-    gradient[z_index()] = 1.0;
-    return true;
-  }
-
   bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
     FrenetRates a = rates(x, 0);
     for (int k = 0; k < n_; ++k) {
@@ -108,38 +98,38 @@ class EngagementNlp final : public Ipopt::TNLP {
     return true;
   }
 
-  bool eval_jac_g(Index, const Number* x, bool, Index, Index, Index* rows, Index* columns,
-                  Number* values) override {
+  void jacobian_pattern(Index* rows, Index* columns) const override {
     Index entry = 0;
-    if (values == nullptr) {
-      auto add = [&](Index row, Index column) {
-        rows[entry] = row;
-        columns[entry] = column;
-        ++entry;
-      };
-      for (int k = 0; k < n_; ++k) {
-        const Index a = 5 * k, b = 5 * (k + 1), row = state_count * k;
-        for (int i = 0; i < 3; ++i) {
-          for (int j = 0; j < 4; ++j) add(row + i, a + j);
-          for (int j = 0; j < 4; ++j) add(row + i, b + j);
-        }
-        add(row + 3, a + 3);
-        add(row + 3, b + 3);
-        add(row + 3, a + 4);
-        add(row + 3, b + 4);
-        add(row + 4, a + 4);
-        add(row + 4, b + 4);
-        add(row + 4, u_index(k));
+    auto add = [&](Index row, Index column) {
+      rows[entry] = row;
+      columns[entry] = column;
+      ++entry;
+    };
+    for (int k = 0; k < n_; ++k) {
+      const Index a = 5 * k, b = 5 * (k + 1), row = state_count * k;
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 4; ++j) add(row + i, a + j);
+        for (int j = 0; j < 4; ++j) add(row + i, b + j);
       }
-      const Index path_rows = state_count * n_;
-      for (int k = 0; k <= n_; ++k) {
-        add(path_rows + 2 * k, 5 * k + 1);
-        add(path_rows + 2 * k, z_index());
-        add(path_rows + 2 * k + 1, 5 * k + 1);
-        add(path_rows + 2 * k + 1, z_index());
-      }
-      return true;
+      add(row + 3, a + 3);
+      add(row + 3, b + 3);
+      add(row + 3, a + 4);
+      add(row + 3, b + 4);
+      add(row + 4, a + 4);
+      add(row + 4, b + 4);
+      add(row + 4, u_index(k));
     }
+    const Index path_rows = state_count * n_;
+    for (int k = 0; k <= n_; ++k) {
+      add(path_rows + 2 * k, 5 * k + 1);
+      add(path_rows + 2 * k, z_index());
+      add(path_rows + 2 * k + 1, 5 * k + 1);
+      add(path_rows + 2 * k + 1, z_index());
+    }
+  }
+
+  void jacobian_values(const Number* x, Number* values) const override {
+    Index entry = 0;
     const double half = 0.5 * h_;
     FrenetRates a = rates(x, 0);
     for (int k = 0; k < n_; ++k) {
@@ -158,35 +148,25 @@ class EngagementNlp final : public Ipopt::TNLP {
       const double path_values[4] = {1.0, -1.0, -1.0, -1.0};
       for (const double value : path_values) values[entry++] = value;
     }
-    return true;
   }
 
   //! Hessian of the Lagrangian (the objective and all but the kinematic rows are linear): at
   //! node j, -h/2 sum_i Lambda_i(j) d2f_i, with Lambda_i(j) the multipliers of kinematic row i of
   //! the one or two intervals that touch node j (frenet_second_derivatives).
-  bool eval_h(Index, const Number* x, bool, Number, Index, const Number* multipliers, bool, Index,
-              Index* rows, Index* columns, Number* values) override {
-    if (values == nullptr) {
-      Index entry = 0;
-      for (int j = 0; j <= n_; ++j) {
-        const Index s = 5 * j;
-        const Index pairs[7][2] = {{s, s},         {s + 1, s},     {s + 1, s + 1}, {s + 2, s},
-                                   {s + 2, s + 1}, {s + 2, s + 2}, {s + 3, s + 3}};
-        for (const auto& pair : pairs) {
-          rows[entry] = pair[0];
-          columns[entry] = pair[1];
-          ++entry;
-        }
-      }
-      return true;
-    }
+  void hessian_pattern(Index* rows, Index* columns) const override {
     Index entry = 0;
     for (int j = 0; j <= n_; ++j) {
-      double sum[3] = {0.0, 0.0, 0.0};
-      for (int i = 0; i < 3; ++i) {
-        if (j >= 1) sum[i] += multipliers[state_count * (j - 1) + i];
-        if (j < n_) sum[i] += multipliers[state_count * j + i];
-      }
+      const Index s = 5 * j;
+      const Index pairs[7][2] = {{s, s},         {s + 1, s},     {s + 1, s + 1}, {s + 2, s},
+                                 {s + 2, s + 1}, {s + 2, s + 2}, {s + 3, s + 3}};
+      append_pattern(pairs, rows, columns, entry);
+    }
+  }
+
+  void hessian_values(const Number* x, const Number* multipliers, Number* values) const override {
+    Index entry = 0;
+    for (int j = 0; j <= n_; ++j) {
+      const std::array<double, 3> sum = node_multipliers(multipliers, j, n_, state_count);
       const Number* node = x + 5 * j;
       const FrenetCurvatureTerms terms =
           frenet_second_derivatives(p_.speed_mps, p_.wheelbase_m, path_curvature(*p_.path, node[0]),
@@ -197,13 +177,12 @@ class EngagementNlp final : public Ipopt::TNLP {
         values[entry++] = -0.5 * h_ * value;
       }
     }
-    return true;
   }
 
   void finalize_solution(Ipopt::SolverReturn status, Index, const Number* x, const Number*,
                          const Number*, Index, const Number*, const Number*, Number,
                          const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
-    result_.converged = status == Ipopt::SUCCESS || status == Ipopt::STOP_AT_ACCEPTABLE_POINT;
+    result_.converged = converged(status);
     result_.max_abs_lateral_error_m = x[z_index()];
     result_.time_step_s = h_;
     const auto nodes = static_cast<std::size_t>(n_ + 1);
@@ -221,6 +200,7 @@ class EngagementNlp final : public Ipopt::TNLP {
   }
 
  private:
+  Index objective_index() const override { return z_index(); }
   Index u_index(int k) const { return state_count * (n_ + 1) + k; }
   Index z_index() const { return state_count * (n_ + 1) + n_; }
 

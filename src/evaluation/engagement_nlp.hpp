@@ -2,11 +2,9 @@
 // Internal: the transcription of the engagement bound (engagement_bound.hpp) as an Ipopt TNLP,
 // and the trajectories it starts from and returns.
 
-#include <IpIpoptApplication.hpp>
-#include <IpTNLP.hpp>
-
 #include <vector>
 
+#include "ipopt_solve.hpp"
 #include "smoothsteer/evaluation/engagement_bound.hpp"
 
 namespace smoothsteer::detail {

@@ -16,7 +16,8 @@
 
 namespace smoothsteer {
 
-EngagementBoundProblem engagement_bound_problem(const io::Scenario& scenario, double time_step_s) {
+EngagementBoundProblem engagement_bound_problem(const runner::Scenario& scenario,
+                                                double time_step_s) {
   EngagementBoundProblem problem;
   problem.path = scenario.path;
   problem.wheelbase_m = scenario.vehicle.wheelbase_m();
@@ -78,7 +79,7 @@ void EngagementStudyOptions::validate() const {
 
 namespace {
 
-EngagementRun score_run(const std::string& name, const io::RunResult& run,
+EngagementRun score_run(const std::string& name, const runner::RunResult& run,
                         const EngagementStudyOptions& options) {
   EngagementRun result;
   result.controller = name;
@@ -104,14 +105,14 @@ EngagementRun failed_run(const std::string& name, const std::string& error) {
   return result;
 }
 
-void run_case(const io::Scenario& base_scenario, const std::string& file,
+void run_case(const runner::Scenario& base_scenario, const std::string& file,
               const EngagementStudyOptions& options, EngagementCase& out) {
-  io::Scenario scenario;
+  runner::Scenario scenario;
   try {
     // The overrides of `smoothsteer run --set`, applied to the file as the CLI does.
-    scenario =
-        io::load_scenario(file, {"start.y_m=" + ResultsTable::number(out.offset_m, 6),
-                                 "start.heading_rad=" + ResultsTable::number(out.heading_rad, 6)});
+    scenario = runner::load_scenario(
+        file, {"start.y_m=" + ResultsTable::number(out.offset_m, 6),
+               "start.heading_rad=" + ResultsTable::number(out.heading_rad, 6)});
   } catch (const std::exception& error) {
     // Every row stays in the table, marked failed.
     out.certified = failed_run(
@@ -125,7 +126,7 @@ void run_case(const io::Scenario& base_scenario, const std::string& file,
   const std::string certified_name =
       "scenario (" + scenario.controller["type"].as<std::string>() + ")";
   try {
-    out.certified = score_run(certified_name, io::run_scenario(scenario), options);
+    out.certified = score_run(certified_name, runner::run_scenario(scenario), options);
   } catch (const std::exception& error) {
     out.certified = failed_run(certified_name, error.what());
   }
@@ -133,7 +134,8 @@ void run_case(const io::Scenario& base_scenario, const std::string& file,
     try {
       // The lane-change comparison's construction: the limits the simulated actuator enforces.
       auto controller = make_comparison_controller(name, detail::comparison_setup_for(scenario));
-      out.baselines.push_back(score_run(name, io::run_scenario(scenario, *controller), options));
+      out.baselines.push_back(
+          score_run(name, runner::run_scenario(scenario, *controller), options));
     } catch (const std::exception& error) {
       out.baselines.push_back(failed_run(name, error.what()));
     }
@@ -186,10 +188,10 @@ EngagementStudyResult run_engagement_study(const EngagementStudyOptions& input) 
   const auto begin = std::chrono::steady_clock::now();
   EngagementStudyResult result;
   result.options = options;
-  std::vector<io::Scenario> scenarios;
+  std::vector<runner::Scenario> scenarios;
   std::vector<std::size_t> scenario_of_case;
   for (std::size_t f = 0; f < options.scenario_files.size(); ++f) {
-    scenarios.push_back(io::load_scenario(options.scenario_files[f]));
+    scenarios.push_back(runner::load_scenario(options.scenario_files[f]));
     for (double offset : options.offsets_m) {
       for (double heading : options.headings_rad) {
         EngagementCase c;
@@ -202,7 +204,7 @@ EngagementStudyResult run_engagement_study(const EngagementStudyOptions& input) 
       }
     }
   }
-  io::run_parallel(result.cases.size(), options.threads, [&](std::size_t i) {
+  runner::run_parallel(result.cases.size(), options.threads, [&](std::size_t i) {
     const std::size_t f = scenario_of_case[i];
     run_case(scenarios[f], options.scenario_files[f], options, result.cases[i]);
   });

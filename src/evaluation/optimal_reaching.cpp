@@ -1,8 +1,4 @@
 #include "smoothsteer/evaluation/optimal_reaching.hpp"
-
-#include <IpIpoptApplication.hpp>
-#include <IpSolveStatistics.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -34,7 +30,7 @@ std::optional<Violation> ReachingProblem::first_violation() const noexcept {
   check.require(intervals >= 10 && intervals <= 5000, "intervals", intervals,
                 "must be in [10, 5000]");
   check.require(max_iterations >= 1, "max_iterations", max_iterations, "must be >= 1");
-  check.require(positive_finite(tolerance), "tolerance", tolerance, "must be finite and > 0");
+  check.require_positive({{"tolerance", tolerance}});
   return check.first();
 }
 
@@ -44,37 +40,12 @@ ReachingSolution solve_with(const ReachingProblem& problem, double guess,
                             const detail::StartingTrajectory* start, bool exact_hessian) {
   ReachingSolution solution;
   Ipopt::SmartPtr<Ipopt::TNLP> nlp = detail::make_reaching_nlp(problem, guess, solution, start);
-  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  app->Options()->SetIntegerValue("print_level", 0);
-  app->Options()->SetStringValue("sb", "yes");
-  app->Options()->SetStringValue("hessian_approximation",
-                                 exact_hessian ? "exact" : "limited-memory");
-  if (problem.check_derivatives) {
-    app->Options()->SetStringValue("derivative_test", "second-order");
-    app->Options()->SetIntegerValue("print_level", 4);
-  }
-  app->Options()->SetStringValue("mu_strategy", "adaptive");
-  app->Options()->SetNumericValue("tol", problem.tolerance);
-  app->Options()->SetIntegerValue("max_iter", static_cast<int>(problem.max_iterations));
-  // Near bang-bang optima convergence can be slow at the end: accept a point
-  // that is feasible to 1e-8 and optimal to 1e-6 for 10 iterations (resimulate_reaching checks
-  // the result against C1, C2 and the end state anyway).
-  app->Options()->SetNumericValue("acceptable_tol", 1e-6);
-  app->Options()->SetNumericValue("acceptable_constr_viol_tol", 1e-8);
-  app->Options()->SetIntegerValue("acceptable_iter", 10);
-  const std::lock_guard lock(detail::ipopt_mutex());
-  if (app->Initialize() != Ipopt::Solve_Succeeded) {
-    solution.solver_status = "Ipopt initialisation failed";
-    return solution;
-  }
-  const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(nlp);
-  solution.solver_status = detail::status_text(status);
-  solution.converged =
-      status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
-  if (Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app->Statistics();
-      Ipopt::IsValid(statistics)) {
-    solution.iterations = statistics->IterationCount();
-  }
+  const detail::IpoptOutcome outcome =
+      detail::solve_nlp(nlp, {problem.tolerance, static_cast<int>(problem.max_iterations),
+                              exact_hessian, problem.check_derivatives});
+  solution.solver_status = outcome.status;
+  solution.converged = outcome.converged;
+  solution.iterations = outcome.iterations;
   return solution;
 }
 

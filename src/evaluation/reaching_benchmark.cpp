@@ -14,13 +14,11 @@ namespace smoothsteer {
 
 std::optional<Violation> ReachingBenchmarkOptions::first_violation() const noexcept {
   RuleChecker check("ReachingBenchmarkOptions");
-  check.require(positive_finite(lateral_tolerance_m), "lateral_tolerance_m", lateral_tolerance_m,
-                "must be finite and > 0");
-  check.require(positive_finite(heading_tolerance_rad), "heading_tolerance_rad",
-                heading_tolerance_rad, "must be finite and > 0");
-  check.require(positive_finite(speed_mps), "speed_mps", speed_mps, "must be finite and > 0");
-  check.require(positive_finite(period_s), "period_s", period_s, "must be finite and > 0");
-  check.require(positive_finite(horizon_m), "horizon_m", horizon_m, "must be finite and > 0");
+  check.require_positive({{"lateral_tolerance_m", lateral_tolerance_m},
+                          {"heading_tolerance_rad", heading_tolerance_rad},
+                          {"speed_mps", speed_mps},
+                          {"period_s", period_s},
+                          {"horizon_m", horizon_m}});
   check.require(!initial_headings_rad.empty(), "initial_headings_rad.size()", 0.0, "must be >= 1");
   return check.first();
 }

@@ -1,6 +1,7 @@
 #include "reaching_nlp.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace smoothsteer::detail {
@@ -13,7 +14,7 @@ using Ipopt::Number;
 // S at the last index. Constraint rows: 3 trapezoidal defects per interval,
 //   d_k = x_{k+1} - x_k - S/(2N) (f(x_k, u_k) + f(x_{k+1}, u_{k+1})),  f = (sin psi, tan delta /
 //   lambda, u).
-class ReachingNlp final : public Ipopt::TNLP {
+class ReachingNlp final : public MinimumOfVariableNlp {
  public:
   ReachingNlp(const ReachingProblem& problem, double guess, ReachingSolution& solution,
               const StartingTrajectory* start = nullptr)
@@ -81,17 +82,6 @@ class ReachingNlp final : public Ipopt::TNLP {
     return true;
   }
 
-  bool eval_f(Index, const Number* x, bool, Number& objective) override {
-    objective = x[s_index()];
-    return true;
-  }
-
-  bool eval_grad_f(Index n, const Number*, bool, Number* gradient) override {
-    std::fill(gradient, gradient + n, 0.0);
-    gradient[s_index()] = 1.0;
-    return true;
-  }
-
   bool eval_g(Index, const Number* x, bool, Index, Number* g) override {
     const double half_step = x[s_index()] / (2.0 * n_);
     for (int k = 0; k < n_; ++k) {
@@ -104,25 +94,25 @@ class ReachingNlp final : public Ipopt::TNLP {
     return true;
   }
 
-  bool eval_jac_g(Index, const Number* x, bool, Index, Index, Index* rows, Index* columns,
-                  Number* values) override {
+  void jacobian_pattern(Index* rows, Index* columns) const override {
     Index entry = 0;
-    if (values == nullptr) {
-      for (int k = 0; k < n_; ++k) {
-        const Index a = 3 * k, b = 3 * (k + 1);
-        const Index pattern[3][5] = {{a, b, a + 1, b + 1, s_index()},
-                                     {a + 1, b + 1, a + 2, b + 2, s_index()},
-                                     {a + 2, b + 2, u_index(k), u_index(k + 1), s_index()}};
-        for (int c = 0; c < 3; ++c) {
-          for (int j = 0; j < 5; ++j) {
-            rows[entry] = 3 * k + c;
-            columns[entry] = pattern[c][j];
-            ++entry;
-          }
+    for (int k = 0; k < n_; ++k) {
+      const Index a = 3 * k, b = 3 * (k + 1);
+      const Index pattern[3][5] = {{a, b, a + 1, b + 1, s_index()},
+                                   {a + 1, b + 1, a + 2, b + 2, s_index()},
+                                   {a + 2, b + 2, u_index(k), u_index(k + 1), s_index()}};
+      for (int c = 0; c < 3; ++c) {
+        for (int j = 0; j < 5; ++j) {
+          rows[entry] = 3 * k + c;
+          columns[entry] = pattern[c][j];
+          ++entry;
         }
       }
-      return true;
     }
+  }
+
+  void jacobian_values(const Number* x, Number* values) const override {
+    Index entry = 0;
     const double scale = 1.0 / (2.0 * n_);
     const double half_step = x[s_index()] * scale;
     const double lambda = p_.wheelbase_m;
@@ -141,7 +131,6 @@ class ReachingNlp final : public Ipopt::TNLP {
         for (int j = 0; j < 5; ++j) values[entry++] = rows_values[c][j];
       }
     }
-    return true;
   }
 
   //! Exact Hessian of the Lagrangian (the objective S is linear). Per node j, with Lambda_r(j)
@@ -149,35 +138,26 @@ class ReachingNlp final : public Ipopt::TNLP {
   //!   d2/dpsi_j^2    =  Lambda_0 S/(2N) sin psi_j        d2/dpsi_j dS   = -Lambda_0 cos psi_j/(2N)
   //!   d2/ddelta_j^2  = -Lambda_1 S/(2N lambda) 2 tan delta_j sec^2 delta_j
   //!   d2/ddelta_j dS = -Lambda_1 sec^2 delta_j/(2N lambda)   d2/du_j dS = -Lambda_2/(2N).
-  bool eval_h(Index, const Number* x, bool, Number, Index, const Number* multipliers, bool, Index,
-              Index* rows, Index* columns, Number* values) override {
-    if (values == nullptr) {
-      Index entry = 0;
-      for (int j = 0; j <= n_; ++j) {
-        const Index psi = 3 * j + 1, delta = 3 * j + 2;
-        const Index pairs[5][2] = {{psi, psi},
-                                   {delta, delta},
-                                   {s_index(), psi},
-                                   {s_index(), delta},
-                                   {s_index(), u_index(j)}};
-        for (const auto& pair : pairs) {
-          rows[entry] = pair[0];
-          columns[entry] = pair[1];
-          ++entry;
-        }
-      }
-      return true;
+  void hessian_pattern(Index* rows, Index* columns) const override {
+    Index entry = 0;
+    for (int j = 0; j <= n_; ++j) {
+      const Index psi = 3 * j + 1, delta = 3 * j + 2;
+      const Index pairs[5][2] = {{psi, psi},
+                                 {delta, delta},
+                                 {s_index(), psi},
+                                 {s_index(), delta},
+                                 {s_index(), u_index(j)}};
+      append_pattern(pairs, rows, columns, entry);
     }
+  }
+
+  void hessian_values(const Number* x, const Number* multipliers, Number* values) const override {
     const double scale = 1.0 / (2.0 * n_);
     const double distance = x[s_index()];
     const double lambda = p_.wheelbase_m;
     Index entry = 0;
     for (int j = 0; j <= n_; ++j) {
-      double sum[3] = {0.0, 0.0, 0.0};
-      for (int c = 0; c < 3; ++c) {
-        if (j >= 1) sum[c] += multipliers[3 * (j - 1) + c];
-        if (j < n_) sum[c] += multipliers[3 * j + c];
-      }
+      const std::array<double, 3> sum = node_multipliers(multipliers, j, n_, 3);
       const double psi = x[3 * j + 1];
       const double tangent = std::tan(x[3 * j + 2]);
       const double secant_squared = 1.0 + tangent * tangent;
@@ -187,13 +167,12 @@ class ReachingNlp final : public Ipopt::TNLP {
       values[entry++] = -sum[1] * scale * secant_squared / lambda;
       values[entry++] = -sum[2] * scale;
     }
-    return true;
   }
 
   void finalize_solution(Ipopt::SolverReturn status, Index, const Number* x, const Number*,
                          const Number*, Index, const Number*, const Number*, Number,
                          const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
-    solution_.converged = status == Ipopt::SUCCESS || status == Ipopt::STOP_AT_ACCEPTABLE_POINT;
+    solution_.converged = converged(status);
     solution_.distance_m = x[s_index()];
     const auto count = static_cast<std::size_t>(n_ + 1);
     solution_.arc_length_m.resize(count);
@@ -212,6 +191,7 @@ class ReachingNlp final : public Ipopt::TNLP {
   }
 
  private:
+  Index objective_index() const override { return s_index(); }
   Index variable_count() const { return 4 * (n_ + 1) + 1; }
   Index u_index(int k) const { return 3 * (n_ + 1) + k; }
   Index s_index() const { return 4 * (n_ + 1); }
@@ -229,28 +209,6 @@ Ipopt::SmartPtr<Ipopt::TNLP> make_reaching_nlp(const ReachingProblem& problem, d
                                                ReachingSolution& solution,
                                                const StartingTrajectory* start) {
   return new ReachingNlp(problem, guess, solution, start);
-}
-
-std::mutex& ipopt_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-const char* status_text(Ipopt::ApplicationReturnStatus status) {
-  switch (status) {
-    case Ipopt::Solve_Succeeded:
-      return "Solve_Succeeded";
-    case Ipopt::Solved_To_Acceptable_Level:
-      return "Solved_To_Acceptable_Level";
-    case Ipopt::Infeasible_Problem_Detected:
-      return "Infeasible_Problem_Detected";
-    case Ipopt::Maximum_Iterations_Exceeded:
-      return "Maximum_Iterations_Exceeded";
-    case Ipopt::Restoration_Failed:
-      return "Restoration_Failed";
-    default:
-      return "Ipopt_Error";
-  }
 }
 
 }  // namespace smoothsteer::detail

@@ -1,11 +1,7 @@
 #pragma once
 //! Internal: the trapezoidal-collocation NLP of the optimal reaching manoeuvre, as an Ipopt TNLP.
 
-#include <IpIpoptApplication.hpp>
-#include <IpTNLP.hpp>
-
-#include <mutex>
-
+#include "ipopt_solve.hpp"
 #include "reaching_start.hpp"
 #include "smoothsteer/evaluation/optimal_reaching.hpp"
 
@@ -16,12 +12,5 @@ namespace smoothsteer::detail {
 Ipopt::SmartPtr<Ipopt::TNLP> make_reaching_nlp(const ReachingProblem& problem, double guess,
                                                ReachingSolution& solution,
                                                const StartingTrajectory* start);
-
-//! Ipopt's return status as text.
-const char* status_text(Ipopt::ApplicationReturnStatus status);
-
-//! Held around every Ipopt solve of the process: this build's MUMPS (the sequential libdmumps
-//! with its MPI stub) keeps global state, so two solves must not run at the same time.
-std::mutex& ipopt_mutex();
 
 }  // namespace smoothsteer::detail

@@ -52,7 +52,7 @@ void write_trace(const std::string& file, const std::vector<TraceSample>& trace)
 //! The certified route is the car's own: a road's `schedule: .../passenger_car_<X>.csv` becomes
 //! `.../<car>_<X>.csv` (the same `smoothsteer tune` command with the car's file), which must exist.
 std::vector<std::string> car_schedule(const Case& c, const std::string& car) {
-  const io::Scenario road = io::load_scenario(c.road_file);
+  const runner::Scenario road = runner::load_scenario(c.road_file);
   const YAML::Node schedule = road.controller["schedule"];
   if (!schedule || !schedule.IsScalar()) return {};
   const std::filesystem::path given(schedule.Scalar());
@@ -72,7 +72,7 @@ std::vector<std::string> car_schedule(const Case& c, const std::string& car) {
 
 //! The road's path (every piece of a plan) as x,y rows every 0.25 m, beside the traces; written
 //! to a file of its own and renamed, so that runs of the same road in parallel cannot mix it.
-void write_path(const std::string& directory, const io::Scenario& scenario, std::size_t id) {
+void write_path(const std::string& directory, const runner::Scenario& scenario, std::size_t id) {
   std::filesystem::create_directories(directory);
   const std::string file = directory + "/path.csv";
   const std::string part = file + "." + std::to_string(id);
@@ -101,14 +101,14 @@ Outcome run_case(const Case& c, const std::string& trace_directory, std::size_t 
   if (c.controller == certified) {
     for (std::string& o : car_schedule(c, stem(c.vehicle_file))) overrides.push_back(o);
   }
-  const io::Scenario scenario = io::load_scenario(c.road_file, overrides);
-  io::RunResult run;
+  const runner::Scenario scenario = runner::load_scenario(c.road_file, overrides);
+  runner::RunResult run;
   if (c.controller == certified) {
-    run = io::run_scenario(scenario);
+    run = runner::run_scenario(scenario);
   } else {
     auto controller =
         make_comparison_controller(c.controller, detail::comparison_setup_for(scenario));
-    run = io::run_scenario(scenario, *controller);
+    run = runner::run_scenario(scenario, *controller);
   }
   Outcome o;
   o.road = scenario.name;

@@ -42,18 +42,18 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
     table.rows.push_back(std::move(row));
   };
   for (const std::string& file : scenario_files) {
-    const io::Scenario scenario = io::load_scenario(file, overrides);
+    const runner::Scenario scenario = runner::load_scenario(file, overrides);
     const double speed = scenario.speed.initial_speed_mps;
     const std::string speed_key = ResultsTable::number(speed, 1);
     // The scenario's own controller: the certified lead-wheel controller of its schedule.
     add_row(speed, "scenario (" + scenario.controller["type"].as<std::string>() + ")",
-            io::run_scenario(scenario).metrics, "",
+            runner::run_scenario(scenario).metrics, "",
             paper.text("lane_change", speed_key, "proposed_max_e_m", 3));
     for (const std::string& name : comparison_controller_names()) {
       // Every controller gets the limits the simulated actuator enforces, so that all rows are
       // compared under the same C1 and C2.
       auto controller = make_comparison_controller(name, detail::comparison_setup_for(scenario));
-      const io::RunResult run = io::run_scenario(scenario, *controller);
+      const runner::RunResult run = runner::run_scenario(scenario, *controller);
       const SaturationStatistics& s = controller->saturation();
       add_row(speed, name, run.metrics, std::to_string(s.limited), "");
     }
@@ -77,7 +77,7 @@ ResultsTable run_parameter_comparison(const std::string& scenario_file) {
     const char* name;
     std::vector<std::string> overrides;
   };
-  const io::Scenario base = io::load_scenario(scenario_file);
+  const runner::Scenario base = runner::load_scenario(scenario_file);
   const double kbar = base.controller["lead_curvature_bound"].as<double>(0.2);
   const double lead = base.controller["lead_wheelbase_m"].as<double>(0.5);
   const double k_rob = base.controller["k_rob"].as<double>(0.3);
@@ -94,8 +94,8 @@ ResultsTable run_parameter_comparison(const std::string& scenario_file) {
                   "k_rob",          "reaching_time_s", "max_abs_e_lead_after_reaching_m",
                   "std_rate_radps", "std_accel_radps2"};
   for (const Setting& setting : settings) {
-    const io::Scenario scenario = io::load_scenario(scenario_file, setting.overrides);
-    const io::RunResult run = io::run_scenario(scenario);
+    const runner::Scenario scenario = runner::load_scenario(scenario_file, setting.overrides);
+    const runner::RunResult run = runner::run_scenario(scenario);
     const Metrics& m = run.metrics;
     table.rows.push_back(
         {setting.name,

@@ -18,7 +18,7 @@
 
 namespace smoothsteer::detail {
 
-inline ComparisonSetup comparison_setup_for(const io::Scenario& scenario) {
+inline ComparisonSetup comparison_setup_for(const runner::Scenario& scenario) {
   ComparisonSetup setup;
   setup.path = scenario.path;
   setup.wheelbase_m = scenario.vehicle.wheelbase_m();

@@ -138,8 +138,8 @@ void TuningRuleOptions::validate() const {
   }
 }
 
-TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
-                                 const std::vector<io::Scenario>& held_out,
+TuningRuleResult run_tuning_rule(const std::vector<runner::Scenario>& training,
+                                 const std::vector<runner::Scenario>& held_out,
                                  const TuningRuleOptions& options) {
   options.validate();
   if (training.empty() || held_out.empty()) {
@@ -148,8 +148,8 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
   }
   TuningRuleResult result;
   result.options = options;
-  for (const io::Scenario& s : training) result.training.push_back(s.name);
-  for (const io::Scenario& s : held_out) result.held_out.push_back(s.name);
+  for (const runner::Scenario& s : training) result.training.push_back(s.name);
+  for (const runner::Scenario& s : held_out) result.held_out.push_back(s.name);
   for (const std::string& controller : options.controllers) {
     const std::vector<GainAxis> axes = gain_axes(controller);
     const std::vector<int> shape =
@@ -174,7 +174,7 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
       int failed = 0;
       long violations = 0;
       double worst = 0.0, rate_sum = 0.0;
-      for (const io::Scenario& scenario : training) {
+      for (const runner::Scenario& scenario : training) {
         const ScenarioScore s =
             score_configuration(scenario, controller, gains, options.divergence_m);
         admissible = admissible && s.admissible();
@@ -198,7 +198,7 @@ TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
     tuned.configurations = configurations;
     tuned.admissible = !std::get<0>(best);
     tuned.training_worst_max_abs_e_m = std::get<3>(best);
-    for (const io::Scenario& scenario : held_out) {
+    for (const runner::Scenario& scenario : held_out) {
       tuned.held_out.push_back(
           score_configuration(scenario, controller, best_gains, options.divergence_m));
     }

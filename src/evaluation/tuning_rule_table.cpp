@@ -49,32 +49,71 @@ std::string names(const std::vector<std::string>& list) {
   return text;
 }
 
+//! One row of the table: a controller's held-out run and its place on the scenario's fronts.
+struct Row {
+  const TunedController& tuned;
+  const ScenarioScore& score;
+  bool front, front_within;
+  const Metrics& metrics() const { return score.metrics; }
+};
+
+std::string yes_no(bool value) {
+  return value ? "yes" : "no";
+}
+
+//! A column's name and its value in one place; an infeasible row (the certified route could not
+//! certify the car) shows only the columns marked `always`.
+struct Column {
+  const char* name;
+  std::string (*value)(const Row&);
+  bool always = false;
+};
+
+std::string fixed(double value, int digits) {
+  return ResultsTable::number(value, digits);
+}
+
+const Column columns[] = {
+    {"scenario", [](const Row& r) { return r.score.scenario; }, true},
+    {"controller", [](const Row& r) { return r.tuned.controller; }, true},
+    {"pareto", [](const Row& r) { return yes_no(r.front); }, true},
+    {"pareto_within_limits", [](const Row& r) { return yes_no(r.front_within); }, true},
+    {"max_abs_e_m", [](const Row& r) { return fixed(r.metrics().max_abs_rear_error_m, 3); }},
+    {"rms_e_m", [](const Row& r) { return fixed(r.metrics().rms_rear_error_m, 3); }},
+    {"held_rate_rms_radps", [](const Row& r) { return fixed(r.metrics().held_rate_rms_radps, 4); }},
+    {"held_rate_max_radps", [](const Row& r) { return fixed(r.metrics().held_rate_max_radps, 3); }},
+    {"held_accel_rms_radps2",
+     [](const Row& r) { return fixed(r.metrics().held_acceleration_rms_radps2, 3); }},
+    {"held_accel_max_radps2",
+     [](const Row& r) { return fixed(r.metrics().held_acceleration_max_radps2, 2); }},
+    {"actual_rate_rms_radps",
+     [](const Row& r) { return fixed(r.metrics().actual_rate_rms_radps, 4); }},
+    {"actual_rate_max_radps",
+     [](const Row& r) { return fixed(r.metrics().actual_rate_max_radps, 3); }},
+    {"actual_accel_rms_radps2",
+     [](const Row& r) { return fixed(r.metrics().actual_acceleration_rms_radps2, 3); }},
+    {"actual_accel_max_radps2",
+     [](const Row& r) { return fixed(r.metrics().actual_acceleration_max_radps2, 2); }},
+    {"held_above_limits", [](const Row& r) { return std::to_string(r.score.held_above_limits()); }},
+    {"actual_above_limits",
+     [](const Row& r) { return std::to_string(r.score.actual_above_limits()); }},
+    {"clamped_updates", [](const Row& r) { return std::to_string(r.score.clamped_updates); }},
+    {"diverged",
+     [](const Row& r) -> std::string {
+       return r.score.infeasible ? "infeasible" : yes_no(r.score.diverged);
+     },
+     true},
+    {"max_side_slip_rad", [](const Row& r) { return fixed(r.metrics().max_abs_side_slip_rad, 4); }},
+    {"admissible_in_training", [](const Row& r) { return yes_no(r.tuned.admissible); }, true},
+    {"gains", [](const Row& r) { return gains_text(r.tuned); }, true},
+};
+
 }  // namespace
 
 ResultsTable TuningRuleResult::table() const {
   ResultsTable t;
   t.title = "Every controller tuned by one rule, reported on held-out scenarios";
-  t.header = {"scenario",
-              "controller",
-              "pareto",
-              "pareto_within_limits",
-              "max_abs_e_m",
-              "rms_e_m",
-              "held_rate_rms_radps",
-              "held_rate_max_radps",
-              "held_accel_rms_radps2",
-              "held_accel_max_radps2",
-              "actual_rate_rms_radps",
-              "actual_rate_max_radps",
-              "actual_accel_rms_radps2",
-              "actual_accel_max_radps2",
-              "held_above_limits",
-              "actual_above_limits",
-              "clamped_updates",
-              "diverged",
-              "max_side_slip_rad",
-              "admissible_in_training",
-              "gains"};
+  for (const Column& column : columns) t.header.push_back(column.name);
   const auto n = ResultsTable::number;
   for (std::size_t s = 0; s < held_out.size(); ++s) {
     std::vector<const ScenarioScore*> rows;
@@ -82,41 +121,11 @@ ResultsTable TuningRuleResult::table() const {
     const std::vector<bool> front = pareto_front(rows, false);
     const std::vector<bool> front_within = pareto_front(rows, true);
     for (std::size_t i = 0; i < controllers.size(); ++i) {
-      const TunedController& c = controllers[i];
-      const ScenarioScore& r = *rows[i];
-      const Metrics& m = r.metrics;
-      if (r.infeasible) {
-        std::vector<std::string> row(t.header.size(), "");
-        row[0] = r.scenario;
-        row[1] = c.controller;
-        row[2] = row[3] = "no";
-        row[17] = "infeasible";
-        row[19] = c.admissible ? "yes" : "no";
-        row[20] = gains_text(c);
-        t.rows.push_back(row);
-        continue;
+      const Row row{controllers[i], *rows[i], front[i], front_within[i]};
+      std::vector<std::string>& cells = t.rows.emplace_back();
+      for (const Column& column : columns) {
+        cells.push_back(column.always || !row.score.infeasible ? column.value(row) : "");
       }
-      t.rows.push_back({r.scenario,
-                        c.controller,
-                        front[i] ? "yes" : "no",
-                        front_within[i] ? "yes" : "no",
-                        n(m.max_abs_rear_error_m, 3),
-                        n(m.rms_rear_error_m, 3),
-                        n(m.held_rate_rms_radps, 4),
-                        n(m.held_rate_max_radps, 3),
-                        n(m.held_acceleration_rms_radps2, 3),
-                        n(m.held_acceleration_max_radps2, 2),
-                        n(m.actual_rate_rms_radps, 4),
-                        n(m.actual_rate_max_radps, 3),
-                        n(m.actual_acceleration_rms_radps2, 3),
-                        n(m.actual_acceleration_max_radps2, 2),
-                        std::to_string(r.held_above_limits()),
-                        std::to_string(r.actual_above_limits()),
-                        std::to_string(r.clamped_updates),
-                        r.diverged ? "yes" : "no",
-                        n(m.max_abs_side_slip_rad, 4),
-                        c.admissible ? "yes" : "no",
-                        gains_text(c)});
     }
   }
   t.notes = {

@@ -28,7 +28,7 @@ bool ScenarioScore::admissible() const noexcept {
   return !infeasible && !diverged && held_above_limits() == 0;
 }
 
-ScenarioScore score_configuration(const io::Scenario& scenario, const std::string& controller,
+ScenarioScore score_configuration(const runner::Scenario& scenario, const std::string& controller,
                                   const std::vector<std::pair<std::string, double>>& gains,
                                   double divergence_m) {
   ScenarioScore result;
@@ -53,7 +53,7 @@ ScenarioScore score_configuration(const io::Scenario& scenario, const std::strin
   }
   SaturatedController& limited = *saturated;
   detail::TimedController timed(std::move(saturated));
-  const io::RunResult run = io::run_scenario(scenario, timed);
+  const runner::RunResult run = runner::run_scenario(scenario, timed);
   const Metrics& m = run.metrics;
   result.metrics = m;
   result.clamped_updates = limited.saturation().limited;

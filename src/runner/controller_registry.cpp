@@ -16,7 +16,11 @@
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
+using io::ConfigError;
+using io::ConfigSection;
+using io::Range;
+using io::read_schedule_csv;
 namespace {
 
 //! The paper's controller (Sec. II-III). Defaults are ControllerParameters' (n = 2, k_rob = 0.3,
@@ -238,4 +242,4 @@ std::unique_ptr<SteeringController> make_controller(
   return controller;
 }
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -13,7 +13,14 @@
 #include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/validation.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
+using io::ConfigError;
+using io::ConfigSection;
+using io::max_input_magnitude;
+using io::max_waypoints;
+using io::parse_number;
+using io::Range;
+using io::read_waypoint_csv;
 namespace {
 
 Vec2 point(ConfigSection& c, const std::string& key, Vec2 fallback) {
@@ -200,4 +207,4 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
   }
 }
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -6,7 +6,9 @@
 
 #include "smoothsteer/io/trace_csv.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
+using io::OutputDirectory;
+using io::TraceCsvWriter;
 namespace {
 
 //! Counts are written as JSON integers, every other metric as a number (null if not finite).
@@ -103,4 +105,4 @@ void write_run_outputs(const std::string& directory, const Scenario& scenario,
   out.commit();
 }
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -12,7 +12,14 @@
 #include "smoothsteer/sim/gear_changes.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
+using io::ConfigError;
+using io::ConfigSection;
+using io::load_yaml_file;
+using io::parse_number;
+using io::parse_yaml_text;
+using io::Range;
+using io::read_vehicle_section;
 namespace {
 
 //! Sets `entry` in `target`; a mapping over a mapping (a scenario's or --set's vehicle.front_tire
@@ -345,4 +352,4 @@ nlohmann::json to_json(const YAML::Node& node) {
   return text;
 }
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -6,7 +6,8 @@
 #include <sstream>
 #include <thread>
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
+using io::ConfigError;
 namespace {
 
 std::string key_of(const std::string& override_text) {
@@ -163,4 +164,4 @@ std::string sweep_csv(const std::vector<SweepRow>& rows) {
   return out.str();
 }
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "closed_loop.hpp"
 #include "plant_integration.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/sim/closed_loop_count.hpp"
@@ -71,7 +72,10 @@ std::string controller_error_detail(Status status, const ControllerInput& input,
   return detail + " for an input within ControllerInputRange";
 }
 
-//! The closed loop on `path`, or on the pieces of `plan` (then `path` is its piece 0).
+}  // namespace
+
+namespace detail {
+
 SimulationResult closed_loop(const Path& path, const PathPlan* plan, const VehicleModel& vehicle,
                              const ActuatorParameters& actuator_parameters,
                              const SpeedProfile& speed, const SimulationParameters& parameters,
@@ -208,10 +212,7 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
     sample.heading_error_rad =
         wrap_angle(rear.heading_rad + travel_offset - rear_projection.heading_rad);
     sample.front_lateral_error_m = front_projection.lateral_error_m;
-    sample.lead_lateral_error_m = output.tracking.lead_lateral_error_m;
-    sample.measured_lateral_error_m = output.tracking.lateral_error_m;
-    sample.sliding_variable = output.tracking.sliding_variable;
-    sample.lead_curvature = output.tracking.lead_curvature;
+    record_controller_report(sample, output.tracking);
     sample.steering_command_rad = command;
     const double difference_rate =
         k > 0 ? (command - previous_command) / parameters.control_period_s : 0.0;
@@ -262,21 +263,5 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
   return result;
 }
 
-}  // namespace
-
-SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringSystem& system, const TraceObserver& observer) {
-  return closed_loop(path, nullptr, vehicle, actuator, speed, parameters, start, system, observer);
-}
-
-SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringSystem& system, const TraceObserver& observer) {
-  return closed_loop(*plan.piece(0).path, &plan, vehicle, actuator, speed, parameters, start,
-                     system, observer);
-}
-
+}  // namespace detail
 }  // namespace smoothsteer

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "closed_loop.hpp"
 #include "smoothsteer/sim/closed_loop_count.hpp"
 
 namespace smoothsteer {
@@ -74,16 +75,14 @@ TraceSample kinematic_trace_sample(const KinematicTraceSample& k,
   s.lateral_error_m = d.lateral_error_m;
   s.heading_error_rad = d.heading_error_rad;
   s.front_lateral_error_m = d.front_lateral_error_m;
-  s.lead_lateral_error_m = d.lead_lateral_error_m;
-  s.measured_lateral_error_m = d.lateral_error_m;
-  s.sliding_variable = d.sliding_variable;
-  s.lead_curvature = d.lead_curvature;
+  detail::record_controller_report(s, d);
   s.steering_command_rad = k.output.steering_angle_rad;
   s.steering_command_rate_radps = k.output.steering_rate_radps;
   s.steering_command_acceleration_radps2 = k.output.steering_acceleration_radps2;
-  s.steering_actual_rad = k.output.steering_angle_rad;
-  s.steering_actual_rate_radps = k.output.steering_rate_radps;
-  s.steering_actual_acceleration_radps2 = k.output.steering_acceleration_radps2;
+  // No actuator: the wheels are at the command.
+  s.steering_actual_rad = s.steering_command_rad;
+  s.steering_actual_rate_radps = s.steering_command_rate_radps;
+  s.steering_actual_acceleration_radps2 = s.steering_command_acceleration_radps2;
   s.yaw_rate_radps =
       options.speed_mps *
       (std::tan(k.output.steering_angle_rad) / options.wheelbase_m + options.curvature_disturbance);

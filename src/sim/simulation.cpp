@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "closed_loop.hpp"
+
 namespace smoothsteer {
 
 PlantIntegrator default_plant_integrator() noexcept {
@@ -127,16 +129,35 @@ SteeringSystemParameters steering_system_parameters(const SideSlipEstimation& sl
 
 namespace {
 
-//! The trace collected in memory around the streaming run.
+//! Streams to `observer`, or without one collects the trace in memory (`capacity` reserved).
 template <typename Run>
-SimulationResult collect_trace(const SimulationParameters& parameters, Run&& run) {
+SimulationResult stream_or_store(const TraceObserver& observer, std::size_t capacity, Run&& run) {
+  if (observer) return run(observer);
   std::vector<TraceSample> trace;
-  trace.reserve(static_cast<std::size_t>(
-      std::min(std::ceil(parameters.duration_s / parameters.control_period_s) + 1.0,
-               SimulationParameters::max_control_steps + 1.0)));
+  trace.reserve(capacity);
   SimulationResult result = run([&trace](const TraceSample& sample) { trace.push_back(sample); });
   result.trace = std::move(trace);
   return result;
+}
+
+//! The samples a run on a path emits at most (validated first: the count needs finite values).
+std::size_t path_trace_capacity(const SimulationParameters& parameters) {
+  parameters.validate();
+  return static_cast<std::size_t>(
+      std::min(std::ceil(parameters.duration_s / parameters.control_period_s) + 1.0,
+               SimulationParameters::max_control_steps + 1.0));
+}
+
+//! The controller overloads: the car's steering system around `controller`, then its overload.
+template <typename Track>
+SimulationResult drive_with_system(const Track& track, const VehicleModel& vehicle,
+                                   const ActuatorParameters& actuator, const SpeedProfile& speed,
+                                   const SimulationParameters& parameters, const Pose2& start,
+                                   SteeringController& controller, const TraceObserver& observer) {
+  parameters.validate();
+  SteeringSystem system(controller,
+                        steering_system_parameters(parameters.side_slip, vehicle.parameters()));
+  return simulate(track, vehicle, actuator, speed, parameters, start, system, observer);
 }
 
 }  // namespace
@@ -144,52 +165,37 @@ SimulationResult collect_trace(const SimulationParameters& parameters, Run&& run
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller) {
-  return collect_trace(parameters, [&](const TraceObserver& observer) {
-    return simulate(path, vehicle, actuator, speed, parameters, start, controller, observer);
+                          SteeringSystem& system, const TraceObserver& observer) {
+  const std::size_t capacity = observer ? 0 : path_trace_capacity(parameters);
+  return stream_or_store(observer, capacity, [&](const TraceObserver& sink) {
+    return detail::closed_loop(path, nullptr, vehicle, actuator, speed, parameters, start, system,
+                               sink);
   });
 }
 
-SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller, const TraceObserver& observer) {
-  parameters.validate();
-  SteeringSystem system(controller,
-                        steering_system_parameters(parameters.side_slip, vehicle.parameters()));
-  return simulate(path, vehicle, actuator, speed, parameters, start, system, observer);
-}
-
 SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller, const TraceObserver& observer) {
-  parameters.validate();
-  SteeringSystem system(controller,
-                        steering_system_parameters(parameters.side_slip, vehicle.parameters()));
-  return simulate(plan, vehicle, actuator, speed, parameters, start, system, observer);
-}
-
-SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller) {
+                          SteeringSystem& system, const TraceObserver& observer) {
   // No reserve: a plan's duration is the profile's, not parameters.duration_s.
-  std::vector<TraceSample> trace;
-  SimulationResult result =
-      simulate(plan, vehicle, actuator, speed, parameters, start, controller,
-               [&trace](const TraceSample& sample) { trace.push_back(sample); });
-  result.trace = std::move(trace);
-  return result;
+  return stream_or_store(observer, 0, [&](const TraceObserver& sink) {
+    return detail::closed_loop(*plan.piece(0).path, &plan, vehicle, actuator, speed, parameters,
+                               start, system, sink);
+  });
 }
 
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringSystem& system) {
-  return collect_trace(parameters, [&](const TraceObserver& observer) {
-    return simulate(path, vehicle, actuator, speed, parameters, start, system, observer);
-  });
+                          SteeringController& controller, const TraceObserver& observer) {
+  return drive_with_system(path, vehicle, actuator, speed, parameters, start, controller, observer);
+}
+
+SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
+                          const ActuatorParameters& actuator, const SpeedProfile& speed,
+                          const SimulationParameters& parameters, const Pose2& start,
+                          SteeringController& controller, const TraceObserver& observer) {
+  return drive_with_system(plan, vehicle, actuator, speed, parameters, start, controller, observer);
 }
 
 }  // namespace smoothsteer

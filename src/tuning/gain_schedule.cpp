@@ -244,15 +244,11 @@ std::optional<Violation> TuningOptions::first_violation() const noexcept {
   RuleChecker check("TuningOptions");
   check.require(order >= 1 && order <= 2, "order", order,
                 "must be 1 or 2 (n >= 3: see docs/tuning.md, 'Beyond n = 2')");
-  check.require(non_negative_finite(max_longitudinal_acceleration_mps2),
-                "max_longitudinal_acceleration_mps2", max_longitudinal_acceleration_mps2,
-                "must be finite and >= 0");
-  check.require(positive_finite(min_lead_curvature_bound), "min_lead_curvature_bound",
-                min_lead_curvature_bound, "must be finite and > 0");
-  check.require(non_negative_finite(matched_disturbance_curvature), "matched_disturbance_curvature",
-                matched_disturbance_curvature, "must be finite and >= 0");
-  check.require(non_negative_finite(path_curvature_bound), "path_curvature_bound",
-                path_curvature_bound, "must be finite and >= 0");
+  check.require_non_negative(
+      {{"max_longitudinal_acceleration_mps2", max_longitudinal_acceleration_mps2}});
+  check.require_positive({{"min_lead_curvature_bound", min_lead_curvature_bound}});
+  check.require_non_negative({{"matched_disturbance_curvature", matched_disturbance_curvature},
+                              {"path_curvature_bound", path_curvature_bound}});
   check.require(path_curvature_rate_bound >= 0.0, "path_curvature_rate_bound",
                 path_curvature_rate_bound, "must be >= 0 (+inf: unknown)");
   check.require(std::isfinite(feedforward_rate_margin) && feedforward_rate_margin >= 1.0,
@@ -261,8 +257,7 @@ std::optional<Violation> TuningOptions::first_violation() const noexcept {
                 feedforward_headroom, "must be in [1, 3]");
   check.require(feedforward_rate_share > 0.0 && feedforward_rate_share < 1.0,
                 "feedforward_rate_share", feedforward_rate_share, "must be in (0, 1)");
-  check.require(positive_finite(feedforward_ramp_length_m), "feedforward_ramp_length_m",
-                feedforward_ramp_length_m, "must be finite and > 0");
+  check.require_positive({{"feedforward_ramp_length_m", feedforward_ramp_length_m}});
   check.require(switching_floor_share > 0.0 && switching_floor_share < 1.0, "switching_floor_share",
                 switching_floor_share, "must be in (0, 1)");
   check.require(k_rob_ceiling > 0.0 && k_rob_ceiling < 1.0, "k_rob_ceiling", k_rob_ceiling,

@@ -7,12 +7,11 @@
 namespace smoothsteer {
 std::optional<Violation> VehicleLimits::first_violation() const noexcept {
   RuleChecker check("VehicleLimits");
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require_positive({{"wheelbase_m", wheelbase_m}});
   check.require(
       positive_finite(max_steering_angle_rad) && max_steering_angle_rad < std::numbers::pi / 2.0,
       "max_steering_angle_rad", max_steering_angle_rad, "must be in (0, pi/2)");
-  check.require(positive_finite(max_steering_rate_radps), "max_steering_rate_radps",
-                max_steering_rate_radps, "must be finite and > 0");
+  check.require_positive({{"max_steering_rate_radps", max_steering_rate_radps}});
   check.require(max_steering_acceleration_radps2 > 0.0, "max_steering_acceleration_radps2",
                 max_steering_acceleration_radps2, "must be > 0 (+inf for no limit)");
   check.require(max_lateral_acceleration_mps2 > 0.0, "max_lateral_acceleration_mps2",

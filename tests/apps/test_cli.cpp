@@ -1,5 +1,5 @@
-// The command-line tools under hostile input (issue 12): regression tests of defects 1, 4, 5, 7
-// and 8 that need the real binaries, a working directory and processes.
+// The command-line tools under hostile input: regression tests of the defects that adversarial
+// testing found and that need the real binaries, a working directory and processes.
 
 #include <gtest/gtest.h>
 
@@ -240,7 +240,7 @@ TEST_F(Cli, SweepWithEveryRowFailingExitsOne) {
   EXPECT_NE(sweep.err.find("controller.k_rob"), std::string::npos) << sweep.err;
 }
 
-// Streaming traces: peak memory does not grow with the run's length (issue 12: a 600 s run
+// Streaming traces: peak memory does not grow with the run's length (a 600 s run
 // within 1.3 times a 10 s run). Sanitizer builds keep freed memory in quarantine: skipped there.
 TEST_F(Cli, PeakMemoryDoesNotGrowWithTheDuration) {
 #if defined(__SANITIZE_ADDRESS__)
@@ -335,7 +335,7 @@ TEST_F(Cli, SummaryWritesCountsAsIntegersAndTheToolVersion) {
   EXPECT_NE(summary.find("\"version\": \"0."), std::string::npos);
 }
 
-// Issue 8: every committed schedule is what the `smoothsteer tune` command written in its
+// Every committed schedule is what the `smoothsteer tune` command written in its
 // scenario file produces, byte for byte (the command runs from the repository root).
 TEST_F(Cli, CommittedSchedulesAreRegeneratedByTheCommandInTheirScenario) {
   int checked = 0;

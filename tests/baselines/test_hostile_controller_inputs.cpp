@@ -1,4 +1,4 @@
-// Issue 12, defect 2: no controller's update() returns ok with a non-finite value. Inputs whose
+// No controller's update() returns ok with a non-finite value. Inputs whose
 // magnitude breaks the arithmetic (|x| or |y| >= 1e155 gave -inf lateral errors with ok, LQR at
 // v = 1e308 NaN diagnostics) are refused with invalid_input and leave the output unchanged; a
 // non-finite result of the controller's own step becomes numerical_error. Seeded: every case

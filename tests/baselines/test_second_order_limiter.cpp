@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "smoothsteer/baselines/steering_limits.hpp"
+#include "support/held_command.hpp"
 #include "support/property.hpp"
 
 namespace smoothsteer {
@@ -85,39 +86,39 @@ std::vector<double> hostile_commands(testing::Random& random, int count, double 
   return raw;
 }
 
-//! Checks the held sequence sample by sample against the limits; "" when it keeps them.
+//! Checks the held sequence sample by sample against the limits (HeldCommand), with the
+//! round-off of differencing at these periods, and the limiter's invariant set: "" when it
+//! keeps them.
 struct HeldChecker {
   SteeringLimits limits;
-  double command = 0.0;
-  double rate = 0.0;
+  testing::HeldCommand held;
   double previous_period = 0.0;
 
+  HeldChecker(const SteeringLimits& l, double command, double rate)
+      : limits(l), held(command, rate) {}
+
   std::string check(double next, double period) {
-    std::ostringstream failure;
-    failure.precision(17);
     const double bound = limits.angle_rad;
     // Round-off of differencing commands of size <= bound at these periods.
     const double rate_roundoff = 16.0 * eps * bound / period;
-    const double next_rate = (next - command) / period;
-    const double acceleration = (next_rate - rate) / period;
     const double shortest = previous_period > 0.0 ? std::min(period, previous_period) : period;
     const double acceleration_roundoff = 2.0 * 16.0 * eps * bound / (period * shortest);
+    held.push(next, period);
+    previous_period = period;
+    std::ostringstream failure;
+    failure.precision(17);
+    failure << held.violation(
+        testing::HeldLimits{.rate_radps = limits.rate_radps,
+                            .acceleration_radps2 = limits.acceleration_radps2},
+        testing::HeldTolerance{1e-9, rate_roundoff, acceleration_roundoff});
+    // The angle exactly, and the invariant set: the stop at the acceleration limit stays inside
+    // the angle bound.
     if (!(std::abs(next) <= bound)) failure << "angle " << next << " beyond " << bound;
-    if (!(std::abs(next_rate) <= limits.rate_radps * (1.0 + 1e-9) + rate_roundoff)) {
-      failure << "rate " << next_rate << " beyond " << limits.rate_radps;
-    }
-    if (!(std::abs(acceleration) <=
-          limits.acceleration_radps2 * (1.0 + 1e-9) + acceleration_roundoff)) {
-      failure << "acceleration " << acceleration << " beyond " << limits.acceleration_radps2;
-    }
-    // The invariant set: the stop at the acceleration limit stays inside the angle bound.
-    const double stop = next + next_rate * std::abs(next_rate) / (2.0 * limits.acceleration_radps2);
+    const double stop =
+        next + held.rate() * std::abs(held.rate()) / (2.0 * limits.acceleration_radps2);
     if (!(std::abs(stop) <= bound * (1.0 + 1e-9) + rate_roundoff * period)) {
       failure << "stopping point " << stop << " beyond " << bound;
     }
-    command = next;
-    rate = next_rate;
-    previous_period = period;
     return failure.str();
   }
 };
@@ -147,7 +148,7 @@ TEST(SecondOrderLimiter, HeldCommandKeepsEveryLimitOnHostileInput) {
           << failure << " at sample " << k << " raw " << raw[static_cast<std::size_t>(k)] << " h "
           << h << "; " << describe(limits) << " period ratio " << ratio << " start " << start
           << " start rate " << start_rate << "; " << testing::seed_message(seed);
-      ASSERT_DOUBLE_EQ(rate, held.rate) << "reported rate at sample " << k;
+      ASSERT_DOUBLE_EQ(rate, held.held.rate()) << "reported rate at sample " << k;
     }
     EXPECT_EQ(saturator.statistics().updates, steps);
   }

@@ -1,4 +1,4 @@
-// One validation shape (issue 12) for the comparison controllers' parameters and the controller's
+// One validation shape for the comparison controllers' parameters and the controller's
 // own structs: is_valid() noexcept, validation_error() and validate() agree on one message
 // "<Struct>: <field> = <exact value> <rule>".
 

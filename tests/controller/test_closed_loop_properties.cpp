@@ -144,7 +144,7 @@ TEST(ClosedLoopProperties, DelayCompensationRestoresConvergenceUnderDeadTime) {
         static_cast<int>((300.0 + 20.0 / parameters.lead_curvature_bound) / speed / period);
     double tail_error = 0.0, max_steering = 0.0;
     ControllerOutput output;
-    smoothsteer::detail::count_closed_loop();  // a closed loop (item 7 count)
+    smoothsteer::detail::count_closed_loop();  // a closed loop (counted)
     for (int step = 0; step < steps; ++step) {
       ASSERT_EQ(controller.update({pose.position, pose.heading_rad, speed, 0.0, period}, output),
                 Status::ok);

@@ -14,6 +14,7 @@
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/sim/closed_loop_count.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
+#include "support/held_command.hpp"
 #include "support/random_setup.hpp"
 
 namespace smoothsteer {
@@ -64,19 +65,17 @@ TEST(CuspAndReset, ReversingOnACircleKeepsTheSteering) {
     const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
     Pose2 pose{{0.0, 0.0}, 0.0};
     const double dt = 0.02;
-    double previous = 0.0;
+    HeldCommand held;
     for (int step = 0; step < 1000; ++step) {
       const double speed = step < 500 ? 2.0 : -2.0;
       ControllerOutput out;
       ASSERT_EQ(controller.update({pose.position, pose.heading_rad, speed, 0.0, dt}, out),
                 Status::ok);
-      if (step > 0) {
-        EXPECT_LE(std::abs(out.steering_angle_rad - previous) / dt,
-                  std::abs(speed) * rate_per_meter(p, c) * (1.0 + 1e-9))
-            << "share " << share << " step " << step;
-      }
-      previous = out.steering_angle_rad;
-      pose = plant.step(pose, previous, speed, dt);
+      held.push(out.steering_angle_rad, dt);
+      const std::string failure =
+          held.violation({.rate_radps = std::abs(speed) * rate_per_meter(p, c)});
+      EXPECT_TRUE(failure.empty()) << failure << " with share " << share << " at step " << step;
+      pose = plant.step(pose, out.steering_angle_rad, speed, dt);
     }
   }
 }
@@ -109,7 +108,8 @@ void reversing_loop(std::uint64_t seed) {
   const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
   smoothsteer::detail::count_closed_loop();
   Pose2 pose = start;
-  double direction = 1.0, previous = 0.0, before_previous = 0.0, previous_speed = 0.0;
+  HeldCommand held;
+  double direction = 1.0, previous_speed = 0.0;
   double next_cusp = random.uniform(1.0, 4.0), next_reset = random.uniform(0.5, 6.0);
   int since_reset = 0;
   for (int step = 0; step < static_cast<int>(20.0 / dt); ++step) {
@@ -120,8 +120,9 @@ void reversing_loop(std::uint64_t seed) {
     }
     if (t >= next_reset) {
       // A re-engagement: the stack resets the controller to the angle the car measures.
-      previous = random.uniform(-1.0, 1.0) * c.steering_angle_rad;
-      controller.reset(previous);
+      const double measured = random.uniform(-1.0, 1.0) * c.steering_angle_rad;
+      controller.reset(measured);
+      held.restart(measured);
       since_reset = 0;
       next_reset += random.uniform(0.5, 6.0);
     }
@@ -132,22 +133,17 @@ void reversing_loop(std::uint64_t seed) {
     const double command = out.steering_angle_rad;
     EXPECT_TRUE(std::isfinite(command));
     EXPECT_LE(std::abs(command), c.steering_angle_rad * (1.0 + 1e-12));
-    if (step >= 1) {
-      EXPECT_LE(std::abs(command - previous) / dt,
-                speed_magnitude * c.rate_per_meter * (1.0 + 1e-6) + 1e-9)
-          << "step " << step << " t=" << t;
-    }
-    if (step >= 2 && since_reset >= 2 && order >= 2) {
+    HeldLimits limits{.rate_radps = speed_magnitude * c.rate_per_meter};
+    if (since_reset >= 2 && order >= 2) {
       // At a cusp the mirrored chain restarts stationary: the second difference is what the
       // certificate allows for the speed's change, 2 |v| / dt.
-      const double second = std::abs(command - 2.0 * previous + before_previous) / (dt * dt);
-      const double bound = std::abs(speed - previous_speed) / dt * c.rate_per_meter +
-                           speed_magnitude * speed_magnitude * c.acceleration_per_meter2;
-      EXPECT_LE(second, bound * (1.0 + 1e-6) + 1e-9) << "step " << step << " t=" << t;
+      limits.acceleration_radps2 = std::abs(speed - previous_speed) / dt * c.rate_per_meter +
+                                   speed_magnitude * speed_magnitude * c.acceleration_per_meter2;
     }
+    held.push(command, dt);
+    const std::string failure = held.violation(limits, {1e-6, 1e-9, 1e-9});
+    EXPECT_TRUE(failure.empty()) << failure << " at step " << step << " t=" << t;
     if (::testing::Test::HasFailure()) return;
-    before_previous = previous;
-    previous = command;
     previous_speed = speed;
     ++since_reset;
     pose = plant.step(pose, command, speed, dt);

@@ -15,6 +15,7 @@
 #include "smoothsteer/sim/closed_loop_count.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
+#include "support/held_command.hpp"
 #include "support/random_setup.hpp"
 
 namespace smoothsteer {
@@ -69,8 +70,9 @@ TEST(FeedforwardCertificate, HeldCommandStaysWithinTheCertificate) {
     const double acceleration = random.uniform(0.0, 2.0);
     double speed = random.uniform(1.0, 20.0), direction = random.coin() ? 1.0 : -1.0;
     Pose2 pose = start;
-    double previous[2] = {0.0, 0.0}, previous_speed = speed;
-    smoothsteer::detail::count_closed_loop();  // a closed loop (item 7 count)
+    HeldCommand held;
+    double previous_speed = speed;
+    smoothsteer::detail::count_closed_loop();  // a closed loop (counted)
     for (int step = 0; step < static_cast<int>(60.0 / dt); ++step) {
       const double a = direction * acceleration;
       ControllerOutput out;
@@ -79,24 +81,25 @@ TEST(FeedforwardCertificate, HeldCommandStaysWithinTheCertificate) {
       const double command = out.steering_angle_rad;
       ASSERT_TRUE(std::isfinite(command));
       ASSERT_LE(std::abs(command), c.steering_angle_rad * (1.0 + 1e-12));
-      if (step >= 1) {
-        // Mean-value theorem over the distance |v_k| dt the chain moved (steering_certificate).
-        const double rate = std::abs(command - previous[0]) / dt;
-        const double rate_bound = std::abs(speed) * c.rate_per_meter;
-        ASSERT_LE(rate, rate_bound * (1.0 + 1e-6) + 1e-9) << "step " << step;
-        tightest_rate = std::max(tightest_rate, rate / rate_bound);
+      // Mean-value theorem over the distance |v_k| dt the chain moved (steering_certificate);
+      // the second difference also sees the speed's change over the period.
+      HeldLimits limits{.rate_radps = std::abs(speed) * c.rate_per_meter};
+      if (order >= 2) {
+        limits.acceleration_radps2 = std::abs(speed - previous_speed) / dt * c.rate_per_meter +
+                                     std::abs(previous_speed) * 0.5 *
+                                         (std::abs(speed) + std::abs(previous_speed)) *
+                                         c.acceleration_per_meter2;
       }
-      if (step >= 2 && order >= 2) {
-        const double second = std::abs(command - 2.0 * previous[0] + previous[1]) / (dt * dt);
-        const double bound = std::abs(speed - previous_speed) / dt * c.rate_per_meter +
-                             std::abs(previous_speed) * 0.5 *
-                                 (std::abs(speed) + std::abs(previous_speed)) *
-                                 c.acceleration_per_meter2;
-        ASSERT_LE(second, bound * (1.0 + 1e-6) + 1e-9) << "step " << step;
-        tightest_acceleration = std::max(tightest_acceleration, second / bound);
+      held.push(command, dt);
+      const std::string failure = held.violation(limits, {1e-6, 1e-9, 1e-9});
+      ASSERT_TRUE(failure.empty()) << failure << " at step " << step;
+      if (held.has_rate()) {
+        tightest_rate = std::max(tightest_rate, std::abs(held.rate()) / limits.rate_radps);
       }
-      previous[1] = previous[0];
-      previous[0] = command;
+      if (held.has_acceleration() && order >= 2) {
+        tightest_acceleration = std::max(
+            tightest_acceleration, std::abs(held.acceleration()) / limits.acceleration_radps2);
+      }
       pose = plant.step(pose, command, speed, dt);
       previous_speed = speed;
       speed += a * dt;

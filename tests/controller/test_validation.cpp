@@ -10,6 +10,7 @@
 #include <string>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/validation.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -210,6 +211,22 @@ TEST(Reset, InitialisesFromMeasuredSteeringAngleInsideTheBound) {
             controller.bounds().steering_angle_rad + 1e-12);
   controller.reset(nan);
   EXPECT_EQ(controller.chain_angles()[0], 0.0);
+}
+
+TEST(RuleChecker, FieldListsReportTheFirstBrokenFieldInOrder) {
+  // The list rules check in the order given and keep the first violation, as single rules do.
+  RuleChecker check("Owner");
+  check.require_positive({{"a", 1.0}, {"b", 0.0}, {"c", nan}});
+  check.require_non_negative({{"d", -1.0}});
+  ASSERT_TRUE(check.first());
+  EXPECT_EQ(describe(check.first()), "Owner: b = 0 must be finite and > 0");
+  RuleChecker non_negative("Owner");
+  non_negative.require_non_negative({{"zero", 0.0}, {"infinite", inf}, {"negative", -1.0}});
+  EXPECT_EQ(describe(non_negative.first()), "Owner: infinite = inf must be finite and >= 0");
+  RuleChecker fine("Owner");
+  fine.require_positive({{"a", 1e-300}});
+  fine.require_non_negative({{"b", 0.0}});
+  EXPECT_FALSE(fine.first());
 }
 
 }  // namespace

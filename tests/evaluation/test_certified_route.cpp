@@ -22,9 +22,9 @@ TEST(CertifiedRoute, ReproducesTheCommittedCircleSectionsSchedule) {
   // tune --speeds 0.5:13:0.5 --max-longitudinal-acceleration 0.5 --feedforward-rate-share 0.5
   // --path scenarios/circle_sections.yaml --feedforward-headroom 1.8 (the file itself now runs
   // the car's one schedule, passenger_car_lane_change.csv).
-  const io::Scenario scenario =
-      io::load_scenario(source_file("scenarios/circle_sections.yaml"),
-                        {"controller.schedule=schedules/passenger_car_circle_sections.csv"});
+  const runner::Scenario scenario =
+      runner::load_scenario(source_file("scenarios/circle_sections.yaml"),
+                            {"controller.schedule=schedules/passenger_car_circle_sections.csv"});
   const TuningOptions options =
       certified_route_options(scenario, {{"feedforward_rate_share", 0.5}});
   const GainSchedule computed = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
@@ -47,21 +47,22 @@ TEST(CertifiedRoute, ReproducesTheCommittedCircleSectionsSchedule) {
 }
 
 TEST(CertifiedRoute, RejectsAnUnknownKnobAndAScenarioWithoutSchedule) {
-  const io::Scenario scenario = io::load_scenario(source_file("scenarios/lane_change_15.yaml"));
+  const runner::Scenario scenario =
+      runner::load_scenario(source_file("scenarios/lane_change_15.yaml"));
   try {
     certified_route_options(scenario, {{"gain_per_s", 1.0}});
     FAIL() << "unknown knob accepted";
   } catch (const std::invalid_argument& error) {
     EXPECT_NE(std::string(error.what()).find("'gain_per_s'"), std::string::npos) << error.what();
   }
-  const io::Scenario fixed = io::load_scenario(source_file("scenarios/lane_change_15.yaml"),
-                                               {"controller={type: lead_wheel}"});
+  const runner::Scenario fixed = runner::load_scenario(source_file("scenarios/lane_change_15.yaml"),
+                                                       {"controller={type: lead_wheel}"});
   EXPECT_THROW(make_certified_controller(fixed), std::invalid_argument);
 }
 
 TEST(CertifiedRoute, EveryKnobCornerStaysWithinTheCarsLimitsOnTheLaneChange) {
-  const io::Scenario scenario =
-      io::load_scenario(source_file("scenarios/lane_change_15.yaml"), {"simulation.duration_s=12"});
+  const runner::Scenario scenario = runner::load_scenario(
+      source_file("scenarios/lane_change_15.yaml"), {"simulation.duration_s=12"});
   for (const GainAxis& share : std::vector<GainAxis>{gain_axes(certified_controller_name)[0]}) {
     for (const double value : {share.low, share.high}) {
       const ScenarioScore score =

@@ -20,7 +20,7 @@ namespace smoothsteer {
 namespace {
 
 EngagementBoundProblem lane_change_problem(int speed, double offset_m, double heading_rad) {
-  const io::Scenario scenario = io::load_scenario(
+  const runner::Scenario scenario = runner::load_scenario(
       testing::source_file("scenarios/lane_change_" + std::to_string(speed) + ".yaml"),
       {"start.y_m=" + std::to_string(offset_m),
        "start.heading_rad=" + std::to_string(heading_rad)});

@@ -54,7 +54,7 @@ TEST(TuningRule, EveryAxisKeyIsAGainOfItsController) {
   EXPECT_TRUE(gain_axes("proposed_c1").empty());
   // The certified controller's axes are knobs of its route, and every study controller has a
   // grid (the same budget for all).
-  const io::Scenario scenario = io::load_scenario(scenario_file("lane_change_15"));
+  const runner::Scenario scenario = runner::load_scenario(scenario_file("lane_change_15"));
   for (const GainAxis& axis : gain_axes(certified_controller_name)) {
     EXPECT_NO_THROW(certified_route_options(scenario, {{axis.key, axis.low}})) << axis.key;
   }
@@ -66,10 +66,10 @@ TEST(TuningRule, EveryAxisKeyIsAGainOfItsController) {
 TEST(TuningRule, IsDeterministicAndReportsOnHeldOutScenariosOnly) {
   register_comparison_controllers();
   const std::vector<std::string> short_run{"simulation.duration_s=4"};
-  const std::vector<io::Scenario> training{
-      io::load_scenario(scenario_file("lane_change_10"), short_run)};
-  const std::vector<io::Scenario> held_out{
-      io::load_scenario(scenario_file("lane_change_15"), short_run)};
+  const std::vector<runner::Scenario> training{
+      runner::load_scenario(scenario_file("lane_change_10"), short_run)};
+  const std::vector<runner::Scenario> held_out{
+      runner::load_scenario(scenario_file("lane_change_15"), short_run)};
   TuningRuleOptions options;
   options.budget = 4;
   options.controllers = {"certified", "stanley", "pure_pursuit", "proposed_c1"};

@@ -207,7 +207,7 @@ TEST(ProjectionBruteForce, WarmProjectionFollowsOntoTheExtensions) {
 }
 
 TEST(ProjectionBruteForce, PointOnTheEndExtensionOfAUTurn) {
-  // The example of issue 11: (-100, 20) lies on the end extension of this U-turn.
+  // A point that once projected wrongly: (-100, 20) lies on the end extension of this U-turn.
   const Path path = PathBuilder({0, 0}, 0).line(100).arc(10, pi).line(50).build();
   const PathProjection projection = path.project({-100.0, 20.0});
   EXPECT_NEAR(projection.lateral_error_m, 0.0, 1e-9);

@@ -12,7 +12,7 @@
 #include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 namespace {
 
 namespace fs = std::filesystem;
@@ -24,7 +24,7 @@ std::string scenario(const std::string& name) {
 std::string error_of(const std::string& file, const std::vector<std::string>& overrides) {
   try {
     load_scenario(file, overrides);
-  } catch (const ConfigError& error) {
+  } catch (const io::ConfigError& error) {
     return error.what();
   }
   return "";
@@ -63,7 +63,7 @@ TEST(DoubleTrackVehicles, SteeringLimitsArePublishedOnes) {
 // `smoothsteer tune` reads the same files (it ignores the simulation-only keys).
 TEST(DoubleTrackVehicles, TunerReadsTheCars) {
   for (const char* car : {"passenger_car", "ford_escort", "bmw_320i", "vw_vanagon"}) {
-    const VehicleLimits limits = load_vehicle_limits(
+    const VehicleLimits limits = io::load_vehicle_limits(
         (fs::path(smoothsteer::testing::source_dir()) / "vehicles" / (std::string(car) + ".yaml"))
             .string());
     EXPECT_DOUBLE_EQ(limits.max_steering_rate_radps, 0.4) << car;
@@ -116,4 +116,4 @@ TEST(DoubleTrackVehicles, OverrideOfOneGroupKeyKeepsTheOthers) {
 }
 
 }  // namespace
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

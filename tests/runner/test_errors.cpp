@@ -10,7 +10,7 @@
 #include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 namespace {
 
 namespace fs = std::filesystem;
@@ -32,7 +32,7 @@ class ScenarioErrors : public ::testing::Test {
   std::string error_of(const std::string& file, const std::vector<std::string>& overrides = {}) {
     try {
       load_scenario(file, overrides);
-    } catch (const ConfigError& error) {
+    } catch (const io::ConfigError& error) {
       return error.what();
     }
     return "";
@@ -146,4 +146,4 @@ TEST_F(ScenarioErrors, BadOverridesAndWaypointFiles) {
 }
 
 }  // namespace
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -1,4 +1,4 @@
-// Issue 12: the hostile inputs that adversarial testing found, as one table. Every one must be
+// The hostile inputs that adversarial testing found, as one table. Every one must be
 // rejected with a message that names the file (or option), the key or line, and the rule.
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@
 #include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/runner/sweep.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 namespace {
 
 namespace fs = std::filesystem;
@@ -47,7 +47,7 @@ class HostileInputs : public ::testing::Test {
     const std::string file = write("s.yaml", input.scenario);
     try {
       load_scenario(file, input.overrides);
-    } catch (const ConfigError& error) {
+    } catch (const io::ConfigError& error) {
       return error.what();
     }
     return "";
@@ -335,31 +335,31 @@ TEST_F(HostileInputs, AliasesWithinTheCapsLoad) {
     text.append("]\n");
   }
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_NO_THROW(parse_yaml_text(text, "shared.yaml"));
+  EXPECT_NO_THROW(io::parse_yaml_text(text, "shared.yaml"));
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
-  EXPECT_THROW(parse_yaml_text(text + "l7: [*l6, *l6]\n", "shared.yaml"), ConfigError);
+  EXPECT_THROW(io::parse_yaml_text(text + "l7: [*l6, *l6]\n", "shared.yaml"), io::ConfigError);
 }
 
 TEST_F(HostileInputs, SubnormalNumbersAreNumbers) {
   const std::string file = write("s.yaml", valid);
   EXPECT_NO_THROW(load_scenario(file, {"start.heading_rad=1e-308", "start.y_m=4.9e-324"}));
-  EXPECT_EQ(parse_number("1e-308"), 1e-308);
-  EXPECT_FALSE(parse_number("1e309"));
-  EXPECT_FALSE(parse_number("0.3garbage"));
-  EXPECT_FALSE(parse_number(" 1"));
-  EXPECT_FALSE(parse_number("nan"));
-  EXPECT_FALSE(parse_number("inf"));
-  EXPECT_FALSE(parse_number(""));
-  EXPECT_EQ(parse_number("-2.5e3"), -2500.0);
+  EXPECT_EQ(io::parse_number("1e-308"), 1e-308);
+  EXPECT_FALSE(io::parse_number("1e309"));
+  EXPECT_FALSE(io::parse_number("0.3garbage"));
+  EXPECT_FALSE(io::parse_number(" 1"));
+  EXPECT_FALSE(io::parse_number("nan"));
+  EXPECT_FALSE(io::parse_number("inf"));
+  EXPECT_FALSE(io::parse_number(""));
+  EXPECT_EQ(io::parse_number("-2.5e3"), -2500.0);
 }
 
 TEST_F(HostileInputs, Utf8Validation) {
-  EXPECT_FALSE(invalid_utf8_offset("plain ascii, caf\xc3\xa9, \xe2\x82\xac, \xf0\x9f\x9a\x97"));
-  EXPECT_EQ(invalid_utf8_offset("ab\xe9"), 2u);            // Latin-1 byte
-  EXPECT_EQ(invalid_utf8_offset("\xc0\xaf"), 0u);          // overlong '/'
-  EXPECT_EQ(invalid_utf8_offset("x\xed\xa0\x80"), 1u);     // surrogate
-  EXPECT_EQ(invalid_utf8_offset("\xf4\x90\x80\x80"), 0u);  // above U+10FFFF
-  EXPECT_EQ(invalid_utf8_offset("\xe2\x82"), 0u);          // truncated
+  EXPECT_FALSE(io::invalid_utf8_offset("plain ascii, caf\xc3\xa9, \xe2\x82\xac, \xf0\x9f\x9a\x97"));
+  EXPECT_EQ(io::invalid_utf8_offset("ab\xe9"), 2u);            // Latin-1 byte
+  EXPECT_EQ(io::invalid_utf8_offset("\xc0\xaf"), 0u);          // overlong '/'
+  EXPECT_EQ(io::invalid_utf8_offset("x\xed\xa0\x80"), 1u);     // surrogate
+  EXPECT_EQ(io::invalid_utf8_offset("\xf4\x90\x80\x80"), 0u);  // above U+10FFFF
+  EXPECT_EQ(io::invalid_utf8_offset("\xe2\x82"), 0u);          // truncated
 }
 
 TEST_F(HostileInputs, SweepGridIsCountedBeforeItIsBuilt) {
@@ -367,7 +367,7 @@ TEST_F(HostileInputs, SweepGridIsCountedBeforeItIsBuilt) {
   try {
     sweep_grid(axes);
     FAIL() << "a 2^30-row grid was accepted";
-  } catch (const ConfigError& error) {
+  } catch (const io::ConfigError& error) {
     EXPECT_NE(std::string(error.what()).find("--vary"), std::string::npos) << error.what();
   }
   axes.resize(3);
@@ -377,25 +377,25 @@ TEST_F(HostileInputs, SweepGridIsCountedBeforeItIsBuilt) {
 TEST_F(HostileInputs, AtomicOutputsRefuseWhatTheyMustNotReplace) {
   const fs::path fifo = directory_ / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  EXPECT_THROW(write_file_atomically(fifo.string(), "x", "--out"), std::runtime_error);
+  EXPECT_THROW(io::write_file_atomically(fifo.string(), "x", "--out"), std::runtime_error);
   EXPECT_TRUE(fs::is_fifo(fifo));
-  EXPECT_THROW(OutputDirectory(fifo.string(), "--out"), std::runtime_error);
-  EXPECT_THROW(OutputDirectory(directory_.string() + "/.", "--out"), std::runtime_error);
+  EXPECT_THROW(io::OutputDirectory(fifo.string(), "--out"), std::runtime_error);
+  EXPECT_THROW(io::OutputDirectory(directory_.string() + "/.", "--out"), std::runtime_error);
 
   const fs::path target = directory_ / "run";
   {
-    OutputDirectory out(target.string(), "--out");
+    io::OutputDirectory out(target.string(), "--out");
     std::ofstream(out.file("trace.csv")) << "old";
     out.commit();
   }
   {
-    OutputDirectory out(target.string(), "--out");
+    io::OutputDirectory out(target.string(), "--out");
     std::ofstream(out.file("trace.csv")) << "new";
     // not committed: destroyed on the way out of a failing run
   }
   EXPECT_EQ(std::ifstream(target / "trace.csv").rdbuf()->sgetc(), 'o');
   {
-    OutputDirectory out(target.string(), "--out");
+    io::OutputDirectory out(target.string(), "--out");
     std::ofstream(out.file("summary.json")) << "{}";
     out.commit();
   }
@@ -410,14 +410,14 @@ TEST_F(HostileInputs, AtomicOutputsRefuseWhatTheyMustNotReplace) {
 TEST_F(HostileInputs, OutputsWithTheLongestLegalNameArePublished) {
   const fs::path directory = directory_ / std::string(255, 'd');
   for (int round = 0; round < 2; ++round) {  // new, then replacing the previous outputs
-    OutputDirectory out(directory.string(), "--out");
+    io::OutputDirectory out(directory.string(), "--out");
     std::ofstream(out.file("trace.csv")) << "t\n";
     ASSERT_NO_THROW(out.commit());
   }
   EXPECT_TRUE(fs::exists(directory / "trace.csv"));
   const fs::path file = directory_ / std::string(255, 'f');
-  ASSERT_NO_THROW(write_file_atomically(file.string(), "speed_mps\n", "--out"));
-  ASSERT_NO_THROW(write_file_atomically(file.string(), "speed_mps\n", "--out"));
+  ASSERT_NO_THROW(io::write_file_atomically(file.string(), "speed_mps\n", "--out"));
+  ASSERT_NO_THROW(io::write_file_atomically(file.string(), "speed_mps\n", "--out"));
   EXPECT_EQ(fs::file_size(file), 10u);
 }
 
@@ -427,7 +427,7 @@ TEST_F(HostileInputs, TunerVehicleReaderRefusesWhatRunRefuses) {
       "max_steering_angle_rad: 0.5\nmax_steering_rate_radps: 0.4\nwheelbase_m: 2.7\n";
   const auto message = [](const std::string& file) {
     try {
-      load_vehicle_limits(file);
+      io::load_vehicle_limits(file);
     } catch (const std::invalid_argument& error) {
       return std::string(error.what());
     }
@@ -458,13 +458,13 @@ TEST_F(HostileInputs, TunerVehicleReaderRefusesWhatRunRefuses) {
 }
 
 TEST_F(HostileInputs, WaypointCsvReader) {
-  EXPECT_EQ(parse_waypoint_csv("x,y\n# c\n0,0\n\n1, 2\r\n", "w.csv").size(), 2u);
-  EXPECT_THROW(parse_waypoint_csv("0,0\n1,2,3\n", "w.csv"), ConfigError);
-  EXPECT_THROW(parse_waypoint_csv("0,0\n", "w.csv"), ConfigError);
-  EXPECT_THROW(parse_waypoint_csv("0,0\n1,inf\n", "w.csv"), ConfigError);
-  EXPECT_THROW(parse_waypoint_csv("0,0\n30,0\n0,0\n", "w.csv"), ConfigError);
-  EXPECT_EQ(parse_waypoint_csv("0,0\n30,0\n30,40\n", "w.csv").size(), 3u);  // a right angle
+  EXPECT_EQ(io::parse_waypoint_csv("x,y\n# c\n0,0\n\n1, 2\r\n", "w.csv").size(), 2u);
+  EXPECT_THROW(io::parse_waypoint_csv("0,0\n1,2,3\n", "w.csv"), io::ConfigError);
+  EXPECT_THROW(io::parse_waypoint_csv("0,0\n", "w.csv"), io::ConfigError);
+  EXPECT_THROW(io::parse_waypoint_csv("0,0\n1,inf\n", "w.csv"), io::ConfigError);
+  EXPECT_THROW(io::parse_waypoint_csv("0,0\n30,0\n0,0\n", "w.csv"), io::ConfigError);
+  EXPECT_EQ(io::parse_waypoint_csv("0,0\n30,0\n30,40\n", "w.csv").size(), 3u);  // a right angle
 }
 
 }  // namespace
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

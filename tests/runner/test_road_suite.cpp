@@ -20,7 +20,7 @@
 #include "smoothsteer/sim/gear_changes.hpp"
 #include "support/source_dir.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 namespace {
 
 namespace fs = std::filesystem;
@@ -137,7 +137,7 @@ class RoadErrors : public ::testing::Test {
                         << "]}\nspeed: " << speed << "\ncontroller: {type: lead_wheel}\n";
     try {
       load_scenario(file.string());
-    } catch (const ConfigError& error) {
+    } catch (const io::ConfigError& error) {
       return error.what();
     }
     return "";
@@ -213,4 +213,4 @@ TEST_F(RoadErrors, CurvatureSpeedProfileKeysAreValidated) {
 }
 
 }  // namespace
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -13,7 +13,7 @@
 #include "smoothsteer/runner/sweep.hpp"
 #include "support/source_dir.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 namespace {
 
 namespace fs = std::filesystem;
@@ -102,10 +102,10 @@ TEST(Registry, OtherLibrariesCanAddControllerTypes) {
    private:
     double angle_;
   };
-  register_controller_type(
-      "test_fixed", [](ConfigSection& c, std::shared_ptr<const Path>, const VehicleParameters&) {
-        return std::make_unique<Straight>(c.number("angle_rad", 0.0, {-0.5, 0.5}));
-      });
+  register_controller_type("test_fixed", [](io::ConfigSection& c, std::shared_ptr<const Path>,
+                                            const VehicleParameters&) {
+    return std::make_unique<Straight>(c.number("angle_rad", 0.0, {-0.5, 0.5}));
+  });
   const std::string file = (source_dir() / "scenarios/reaching_0.yaml").string();
   const Scenario s =
       load_scenario(file, {"controller={type: test_fixed, angle_rad: 0.0}",
@@ -116,7 +116,7 @@ TEST(Registry, OtherLibrariesCanAddControllerTypes) {
   try {
     load_scenario(file, {"controller={type: test_fixed, angle: 0.1}"});
     FAIL() << "unknown key accepted";
-  } catch (const ConfigError& error) {
+  } catch (const io::ConfigError& error) {
     EXPECT_NE(std::string(error.what()).find("controller.angle'"), std::string::npos)
         << error.what();
   }
@@ -126,7 +126,7 @@ TEST(Sweep, GridPaperVariationsAndParallelRunsAgreeWithSequentialRuns) {
   const auto grid = sweep_grid({parse_sweep_axis("a=1,2,3"), parse_sweep_axis("b.c=x,y")});
   ASSERT_EQ(grid.size(), 6u);
   EXPECT_EQ(grid[5], (std::vector<std::string>{"a=3", "b.c=y"}));
-  EXPECT_THROW(parse_sweep_axis("novalues"), ConfigError);
+  EXPECT_THROW(parse_sweep_axis("novalues"), io::ConfigError);
 
   const std::string file = (source_dir() / "scenarios/lane_change_10.yaml").string();
   // The paper's variations (Sec. IV-A) vary a fixed lead-wheel controller, not a schedule.
@@ -152,4 +152,4 @@ TEST(Sweep, GridPaperVariationsAndParallelRunsAgreeWithSequentialRuns) {
 }
 
 }  // namespace
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

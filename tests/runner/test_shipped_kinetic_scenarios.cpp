@@ -23,7 +23,7 @@
 #include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 namespace {
 
 using testing::source_dir;
@@ -108,7 +108,7 @@ TEST(ShippedKineticScenarios, MeetTheirPinnedFiguresAtTheCarsActuatorOverNoiseSe
 // schedule's path reduced to its file name (the road suite's files sit one folder deeper).
 std::map<std::string, std::string> controller_block(const std::string& file) {
   const YAML::Node block =
-      load_yaml_file((source_dir() / "scenarios" / file).string())["controller"];
+      io::load_yaml_file((source_dir() / "scenarios" / file).string())["controller"];
   std::map<std::string, std::string> keys;
   for (const auto& entry : block) keys[entry.first.as<std::string>()] = YAML::Dump(entry.second);
   keys["schedule"] = std::filesystem::path(keys["schedule"]).filename().string();
@@ -169,4 +169,4 @@ TEST(ShippedKineticScenarios, DegradeGracefullyWithTheObserverOffByTwentyPercent
 }
 
 }  // namespace
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -1,15 +1,17 @@
-// Issue 12: a non-finite sample never leaves the simulation with status ok (defect 2), counts
-// the input controls are capped (defect 3), streamed runs equal stored ones, and the metrics of
-// the held command follow their definition (docs/metrics.md).
+// A non-finite sample never leaves the simulation with status ok, counts the input controls
+// are capped (so a hostile file cannot exhaust memory), streamed runs equal stored ones, and the
+// metrics of the held command follow their definition (docs/metrics.md).
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "smoothsteer/sim/simulation.hpp"
+#include "support/held_command.hpp"
 #include "support/property.hpp"
 #include "support/sim_test_support.hpp"
 
@@ -120,6 +122,47 @@ TEST(Metrics, HeldCommandRateAndAccelerationFollowTheirDefinition) {
   EXPECT_EQ(m.actual_rate_violations, 0);
   EXPECT_NEAR(m.actual_acceleration_rms_radps2, 20.0, 1e-12);
   EXPECT_EQ(m.actual_acceleration_violations, 1);
+}
+
+TEST(Metrics, TheTestsHeldCommandCheckAgreesWithTheMetrics) {
+  // tests/support/held_command.hpp on the sequence above: the same rates and accelerations, and
+  // a violation named exactly where the metrics count one.
+  const double commands[] = {0.0, 0.01, 0.03, 0.03};
+  const double rates[] = {0.0, 0.5, 1.0, 0.0};
+  const double accelerations[] = {0.0, 0.0, 25.0, -50.0};
+  testing::HeldCommand held;
+  const testing::HeldLimits limits{
+      .angle_rad = 0.02, .rate_radps = 0.8, .acceleration_radps2 = 30.0};
+  // Which limits each sample breaks: none, none, angle and rate, angle and acceleration.
+  const char* broken[] = {"", "", "angle rate", "angle acceleration"};
+  for (int k = 0; k < 4; ++k) {
+    held.push(commands[k], 0.02);
+    EXPECT_EQ(held.has_rate(), k >= 1);
+    EXPECT_EQ(held.has_acceleration(), k >= 2);
+    if (held.has_rate()) {
+      EXPECT_NEAR(held.rate(), rates[k], 1e-12) << k;
+    }
+    if (held.has_acceleration()) {
+      EXPECT_NEAR(held.acceleration(), accelerations[k], 1e-9) << k;
+    }
+    const std::string failure = held.violation(limits);
+    std::string named;
+    for (const char* what : {"angle", "rate", "acceleration"}) {
+      std::string needle = "held ";
+      needle.append(what).append(" ");
+      if (failure.find(needle) == std::string::npos) continue;
+      if (!named.empty()) named.append(" ");
+      named.append(what);
+    }
+    EXPECT_EQ(named, broken[k]) << "sample " << k << ": " << failure;
+  }
+  EXPECT_NEAR(held.max_abs_rate(), 1.0, 1e-12);
+  EXPECT_NEAR(held.max_abs_acceleration(), 50.0, 1e-9);
+  held.restart(0.01);
+  EXPECT_FALSE(held.has_rate());
+  held.push(0.02, 0.02);
+  EXPECT_TRUE(held.has_rate() && !held.has_acceleration());
+  EXPECT_NEAR(held.rate(), 0.5, 1e-12);
 }
 
 TEST(Metrics, RmsRearErrorIsOverEveryRowWithTheStart) {

@@ -1,4 +1,4 @@
-// One validation shape (issue 12): is_valid() noexcept, validation_error() and validate() agree,
+// One validation shape: is_valid() noexcept, validation_error() and validate() agree,
 // and every message is "<Struct>: <field> = <exact value> <rule>".
 
 #include <gtest/gtest.h>

@@ -281,7 +281,7 @@ TEST(VehicleDynamicsValidation, EveryNewParameterIsNamed) {
 namespace smoothsteer {
 namespace {
 
-// Issue 8, item 5: a constant curvature disturbance on the PLANT's rear axle (not injected into
+// A constant curvature disturbance on the PLANT's rear axle (not injected into
 // the controller's model). disturbance_estimation_length_m estimates it to within 3 %, and the
 // feedforward absorbs it: the steady rear-axle offset shrinks by at least a quarter (typically
 // 30-60 %). It does not vanish (docs/feedforward.md, "disturbances on the vehicle", says why this

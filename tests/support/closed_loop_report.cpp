@@ -1,6 +1,6 @@
 // Linked into every test executable: at exit, appends the number of closed loops the process ran
 // and its test name to the file named by SMOOTHSTEER_LOOP_COUNT_FILE, one line per process
-// (scripts/test.sh sums them and prints the total of the run; issue 12, item 7). Nothing happens
+// (scripts/test.sh sums them and prints the total of the run, docs/benchmarks.md). Nothing happens
 // without the variable.
 
 #include <cstdio>

@@ -17,8 +17,8 @@
 namespace smoothsteer {
 namespace {
 
-io::Scenario lane_change() {
-  return io::load_scenario(testing::source_file("scenarios/lane_change_15.yaml"));
+runner::Scenario lane_change() {
+  return runner::load_scenario(testing::source_file("scenarios/lane_change_15.yaml"));
 }
 
 //! The options that reproduce lane_change_15's block from the car (its schedule was tuned with
@@ -32,14 +32,14 @@ SteeringSystemOptions lane_change_options() {
 }
 
 TEST(SteeringSystemSimulation, EqualsDrivingTheObjectByHand) {
-  const io::Scenario scenario = lane_change();
+  const runner::Scenario scenario = lane_change();
   const VehicleDescription car{scenario.vehicle, scenario.actuator};
   SimulationParameters parameters = scenario.simulation;
   // The trace holds the plant's true values: without sensor noise they are what the sensors said.
   parameters.side_slip.yaw_rate_noise_std_radps = 0.0;
   parameters.side_slip.lateral_acceleration_noise_std_mps2 = 0.0;
   parameters.position_noise_std_m = parameters.heading_noise_std_rad = 0.0;
-  const std::unique_ptr<VehicleModel> model = io::make_vehicle_model(scenario);
+  const std::unique_ptr<VehicleModel> model = runner::make_vehicle_model(scenario);
   for (const SlipInput slip : {SlipInput::observer, SlipInput::sensor}) {
     SteeringSystemOptions options = lane_change_options();
     options.slip_input = slip;
@@ -81,12 +81,12 @@ TEST(SteeringSystemSimulation, EqualsDrivingTheObjectByHand) {
 }
 
 TEST(SteeringSystemSimulation, ScenarioRouteIsTheSystemRoute) {
-  const io::Scenario scenario = lane_change();
-  const io::RunResult run = io::run_scenario(scenario);
-  const std::unique_ptr<SteeringController> controller = io::make_controller(scenario);
+  const runner::Scenario scenario = lane_change();
+  const runner::RunResult run = runner::run_scenario(scenario);
+  const std::unique_ptr<SteeringController> controller = runner::make_controller(scenario);
   SteeringSystem system(
       *controller, steering_system_parameters(scenario.simulation.side_slip, scenario.vehicle));
-  const std::unique_ptr<VehicleModel> model = io::make_vehicle_model(scenario);
+  const std::unique_ptr<VehicleModel> model = runner::make_vehicle_model(scenario);
   const SimulationResult result =
       simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
                scenario.start, system);
@@ -97,15 +97,15 @@ TEST(SteeringSystemSimulation, ScenarioRouteIsTheSystemRoute) {
 }
 
 TEST(SteeringSystemSimulation, FromTheVehicleFileTracksTheLaneChange) {
-  const io::Scenario scenario = lane_change();
+  const runner::Scenario scenario = lane_change();
   const VehicleDescription car{scenario.vehicle, scenario.actuator};
   SteeringSystem system = make_steering_system(car, scenario.path, lane_change_options());
-  const std::unique_ptr<VehicleModel> model = io::make_vehicle_model(scenario);
+  const std::unique_ptr<VehicleModel> model = runner::make_vehicle_model(scenario);
   const SimulationResult result =
       simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
                scenario.start, system);
   const Metrics metrics = compute_metrics(result.trace, scenario.metrics);
-  const Metrics own = io::run_scenario(scenario).metrics;
+  const Metrics own = runner::run_scenario(scenario).metrics;
   // The file's own block: 0.034 m. The system from the car alone (same schedule route, computed
   // in process instead of read from the committed CSV) gives the same to 1 mm.
   EXPECT_NEAR(metrics.max_abs_rear_error_m, own.max_abs_rear_error_m, 1e-3);

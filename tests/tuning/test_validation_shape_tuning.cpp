@@ -1,4 +1,4 @@
-// One validation shape (issue 12) for the tuner's structs: is_valid() noexcept,
+// One validation shape for the tuner's structs: is_valid() noexcept,
 // validation_error() and validate() agree on "<Struct>: <field> = <exact value> <rule>".
 
 #include <gtest/gtest.h>

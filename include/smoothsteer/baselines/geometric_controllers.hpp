@@ -1,6 +1,6 @@
 #pragma once
 //! \file geometric_controllers.hpp
-//! The two classic geometric path trackers, as comparison baselines (issue "Comparison" d, e).
+//! The two classic geometric path trackers, as comparison baselines.
 //! Neither respects C1/C2 by construction: wrap them in SaturatedController.
 //!
 //! Stanley (Thrun et al., "Stanley: the robot that won the DARPA Grand Challenge", J. Field
@@ -17,7 +17,7 @@
 
 #include <memory>
 
-#include "smoothsteer/controller/path_swap.hpp"
+#include "smoothsteer/baselines/path_tracking_baseline.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/validation.hpp"
@@ -37,26 +37,13 @@ struct StanleyParameters {
   void validate() const { throw_if_violated(first_violation()); }
 };
 
-class StanleyController final : public SteeringController {
+class StanleyController final : public PathTrackingBaseline<StanleyParameters> {
  public:
   StanleyController(const StanleyParameters& parameters, std::shared_ptr<const Path> path);
+  const char* name() const noexcept override { return "stanley"; }
 
  protected:
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
-
- public:
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
-  const char* name() const noexcept override { return "stanley"; }
-  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
-  Status set_path(std::shared_ptr<const Path> path) noexcept override {
-    return swap_path(path_, path, rear_hint_, front_hint_);
-  }
-
- private:
-  StanleyParameters parameters_;
-  std::shared_ptr<const Path> path_;
-  double steering_ = 0.0;
-  ProjectionHint rear_hint_, front_hint_;
 };
 
 struct PurePursuitParameters {
@@ -73,28 +60,15 @@ struct PurePursuitParameters {
   void validate() const { throw_if_violated(first_violation()); }
 };
 
-class PurePursuitController final : public SteeringController {
+class PurePursuitController final : public PathTrackingBaseline<PurePursuitParameters> {
  public:
   PurePursuitController(const PurePursuitParameters& parameters, std::shared_ptr<const Path> path);
-
- protected:
-  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
-
- public:
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "pure_pursuit"; }
-  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
-  Status set_path(std::shared_ptr<const Path> path) noexcept override {
-    return swap_path(path_, path, rear_hint_, front_hint_);
-  }
   //! L_d at speed v [m].
   double lookahead_m(double speed_mps) const noexcept;
 
- private:
-  PurePursuitParameters parameters_;
-  std::shared_ptr<const Path> path_;
-  double steering_ = 0.0;
-  ProjectionHint rear_hint_, front_hint_;
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
 };
 
 }  // namespace smoothsteer

@@ -23,7 +23,7 @@
 
 #include <memory>
 
-#include "smoothsteer/controller/path_swap.hpp"
+#include "smoothsteer/baselines/path_tracking_baseline.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/validation.hpp"
@@ -51,32 +51,22 @@ struct HosmParameters {
   void validate() const { throw_if_violated(first_violation()); }
 };
 
-class HosmController final : public SteeringController {
+class HosmController final : public PathTrackingBaseline<HosmParameters> {
  public:
   HosmController(const HosmParameters& parameters, std::shared_ptr<const Path> path);
 
- protected:
-  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
-
- public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "hosm"; }
-  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
-  Status set_path(std::shared_ptr<const Path> path) noexcept override {
-    return swap_path(path_, path, rear_hint_, front_hint_);
-  }
-  const HosmParameters& parameters() const noexcept { return parameters_; }
 
   //! delta' [rad/m] of the law at state (e, psi, delta); exposed for tests.
   double steering_rate_per_meter(double lateral_error_m, double heading_error_rad,
                                  double steering_angle_rad) const noexcept;
 
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
  private:
-  HosmParameters parameters_;
-  std::shared_ptr<const Path> path_;
   double alpha_ = 0.0;
-  double steering_ = 0.0;
-  ProjectionHint rear_hint_, front_hint_;
 };
 
 }  // namespace smoothsteer

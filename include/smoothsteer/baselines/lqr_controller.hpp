@@ -15,7 +15,7 @@
 
 #include <memory>
 
-#include "smoothsteer/controller/path_swap.hpp"
+#include "smoothsteer/baselines/path_tracking_baseline.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/validation.hpp"
@@ -46,26 +46,13 @@ struct LqrGains {
 };
 LqrGains lqr_gains(const LqrParameters& parameters, double speed_mps) noexcept;
 
-class LqrController final : public SteeringController {
+class LqrController final : public PathTrackingBaseline<LqrParameters> {
  public:
   LqrController(const LqrParameters& parameters, std::shared_ptr<const Path> path);
+  const char* name() const noexcept override { return "lqr"; }
 
  protected:
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
-
- public:
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
-  const char* name() const noexcept override { return "lqr"; }
-  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
-  Status set_path(std::shared_ptr<const Path> path) noexcept override {
-    return swap_path(path_, path, rear_hint_, front_hint_);
-  }
-
- private:
-  LqrParameters parameters_;
-  std::shared_ptr<const Path> path_;
-  double steering_ = 0.0;
-  ProjectionHint rear_hint_, front_hint_;
 };
 
 }  // namespace smoothsteer

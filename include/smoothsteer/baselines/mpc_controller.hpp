@@ -26,8 +26,8 @@
 #include <memory>
 #include <span>
 
+#include "smoothsteer/baselines/path_tracking_baseline.hpp"
 #include "smoothsteer/baselines/steering_limits.hpp"
-#include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/validation.hpp"
@@ -72,40 +72,29 @@ namespace detail {
 struct MpcWorkspace;
 }
 
-class MpcController final : public SteeringController {
+class MpcController final : public PathTrackingBaseline<MpcParameters> {
  public:
   MpcController(const MpcParameters& parameters, std::shared_ptr<const Path> path);
   ~MpcController() override;
   MpcController(const MpcController&) = delete;
   MpcController& operator=(const MpcController&) = delete;
 
- protected:
-  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
-
- public:
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override {
     return parameters_.solver == MpcSolver::constrained ? "mpc_constrained" : "mpc";
   }
-  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints; the
-  //! command history and the steering estimate carry on.
-  Status set_path(std::shared_ptr<const Path> path) noexcept override {
-    return swap_path(path_, path, rear_hint_, front_hint_);
-  }
 
-  const MpcParameters& parameters() const noexcept { return parameters_; }
   //! The N commands planned by the last solve (before the saturation of the first one).
   std::span<const double> planned_steering() const noexcept;
   //! Updates in which the constrained QP failed and the clamped unconstrained plan was used.
   long solver_failures() const noexcept { return solver_failures_; }
 
+ protected:
+  Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
+
  private:
-  MpcParameters parameters_;
-  std::shared_ptr<const Path> path_;
   std::unique_ptr<detail::MpcWorkspace> workspace_;
-  ProjectionHint rear_hint_, front_hint_;
   double steering_estimate_ = 0.0;  //!< delta of the lag model, propagated from the commands
-  double previous_command_ = 0.0;   //!< u_prev
   double command_before_ = 0.0;     //!< u_pprev (steering-acceleration term)
   bool first_update_ = true;
   long solver_failures_ = 0;

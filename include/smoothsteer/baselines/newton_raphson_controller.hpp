@@ -20,8 +20,8 @@
 
 #include <memory>
 
+#include "smoothsteer/baselines/path_tracking_baseline.hpp"
 #include "smoothsteer/baselines/steering_limits.hpp"
-#include "smoothsteer/controller/path_swap.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/validation.hpp"
@@ -57,28 +57,19 @@ struct ArcPrediction {
 ArcPrediction predict_arc(double steering_angle_rad, double wheelbase_m,
                           double distance_m) noexcept;
 
-class NewtonRaphsonController final : public SteeringController {
+class NewtonRaphsonController final : public PathTrackingBaseline<NewtonRaphsonParameters> {
  public:
   NewtonRaphsonController(const NewtonRaphsonParameters& parameters,
                           std::shared_ptr<const Path> path);
 
+  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  const char* name() const noexcept override { return "newton_raphson"; }
+
  protected:
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
 
- public:
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
-  const char* name() const noexcept override { return "newton_raphson"; }
-  //! Replanning (SteeringController::set_path): swaps the path, re-seeds the hints.
-  Status set_path(std::shared_ptr<const Path> path) noexcept override {
-    return swap_path(path_, path, rear_hint_, front_hint_);
-  }
-
  private:
-  NewtonRaphsonParameters parameters_;
-  std::shared_ptr<const Path> path_;
-  double steering_ = 0.0;
   double rate_ = 0.0;
-  ProjectionHint rear_hint_, front_hint_;
 };
 
 }  // namespace smoothsteer

@@ -23,11 +23,10 @@ inline void require(bool ok, const char* owner, const char* field, double value,
 inline void require_x_ext_limits(RuleChecker& check, double wheelbase_m,
                                  double steering_angle_bound_rad,
                                  double steering_rate_bound_per_m) noexcept {
-  check.require(positive_finite(wheelbase_m), "wheelbase_m", wheelbase_m, "must be finite and > 0");
+  check.require_positive({{"wheelbase_m", wheelbase_m}});
   check.require(positive_finite(steering_angle_bound_rad) && steering_angle_bound_rad < pi / 2.0,
                 "steering_angle_bound_rad", steering_angle_bound_rad, "must be in (0, pi/2)");
-  check.require(positive_finite(steering_rate_bound_per_m), "steering_rate_bound_per_m",
-                steering_rate_bound_per_m, "must be finite and > 0");
+  check.require_positive({{"steering_rate_bound_per_m", steering_rate_bound_per_m}});
 }
 
 }  // namespace smoothsteer::detail

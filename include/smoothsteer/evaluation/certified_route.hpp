@@ -28,23 +28,24 @@ inline constexpr const char* certified_controller_name = "certified";
 
 //! The scenario's car as the tuner sees it: wheelbase, steering angle, rate and acceleration
 //! limits of the vehicle, and the friction limit mu g of its tires (as load_vehicle_limits).
-VehicleLimits vehicle_limits_of(const io::Scenario& scenario);
+VehicleLimits vehicle_limits_of(const runner::Scenario& scenario);
 
 //! Grid speeds 0.5, 1.0, ... up to one step beyond the first multiple of 0.5 m/s at or above
 //! the scenario's top speed (as the committed circle_sections schedule: 12.5 m/s -> 13).
-std::vector<double> certified_speed_grid(const io::Scenario& scenario);
+std::vector<double> certified_speed_grid(const runner::Scenario& scenario);
 
 //! The route's options for the scenario: the controller section's parameters as the template,
 //! the committed schedule's feedforward headroom (its largest kbar_ff over the path's curvature
 //! bound, to 1e-6), the path's demand, the speed profile's |dv/dt|; then each knob (key, value)
 //! applied. Throws std::invalid_argument naming a key that is not a knob, or a scenario whose
 //! controller is not a scheduled_lead_wheel.
-TuningOptions certified_route_options(const io::Scenario& scenario,
+TuningOptions certified_route_options(const runner::Scenario& scenario,
                                       const std::vector<std::pair<std::string, double>>& knobs);
 
 //! The certified controller for the scenario with these knobs. Throws as above, and
 //! InfeasibleLimits when the car cannot be certified on the grid with them.
 std::unique_ptr<SteeringController> make_certified_controller(
-    const io::Scenario& scenario, const std::vector<std::pair<std::string, double>>& knobs = {});
+    const runner::Scenario& scenario,
+    const std::vector<std::pair<std::string, double>>& knobs = {});
 
 }  // namespace smoothsteer

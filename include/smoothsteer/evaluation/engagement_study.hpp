@@ -18,7 +18,7 @@ namespace smoothsteer {
 //! The bound problem of a scenario: its path, start pose, speed (the profile's initial speed,
 //! held), wheelbase and the car's steering limits (vehicle file), over the scenario's duration
 //! or until the rear axle's closest point reaches the end of an open path, whichever is first.
-EngagementBoundProblem engagement_bound_problem(const io::Scenario& scenario,
+EngagementBoundProblem engagement_bound_problem(const runner::Scenario& scenario,
                                                 double time_step_s = 0.04);
 
 //! Travel of the rear axle from the start to the first row after which its |e| stays below

@@ -87,7 +87,7 @@ struct ScenarioScore {
 
 //! Runs `controller` (a study controller) with `gains` on `scenario`; the baselines get the
 //! scenario's comparison set-up (scenario_setup.hpp), the certified one its route.
-ScenarioScore score_configuration(const io::Scenario& scenario, const std::string& controller,
+ScenarioScore score_configuration(const runner::Scenario& scenario, const std::string& controller,
                                   const std::vector<std::pair<std::string, double>>& gains,
                                   double divergence_m);
 
@@ -111,8 +111,8 @@ struct TuningRuleResult {
   ResultsTable timings_table() const;
 };
 
-TuningRuleResult run_tuning_rule(const std::vector<io::Scenario>& training,
-                                 const std::vector<io::Scenario>& held_out,
+TuningRuleResult run_tuning_rule(const std::vector<runner::Scenario>& training,
+                                 const std::vector<runner::Scenario>& held_out,
                                  const TuningRuleOptions& options = {});
 
 }  // namespace smoothsteer

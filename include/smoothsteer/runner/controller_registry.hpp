@@ -16,10 +16,10 @@
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 
 using ControllerFactory = std::function<std::unique_ptr<SteeringController>(
-    ConfigSection& controller_section, std::shared_ptr<const Path> path,
+    io::ConfigSection& controller_section, std::shared_ptr<const Path> path,
     const VehicleParameters& vehicle)>;
 
 //! Adds or replaces a controller type. "lead_wheel" is built in.
@@ -36,4 +36,4 @@ std::unique_ptr<SteeringController> make_controller(
     YAML::Node* resolved = nullptr,
     std::shared_ptr<const std::set<std::string>> overridden_keys = nullptr);
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -11,7 +11,7 @@
 #include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 
 //! Version of the project (CMake's project version) and the git commit it was configured from
 //! ("unknown" outside a git checkout).
@@ -25,11 +25,11 @@ nlohmann::json summary_json(const Scenario& scenario, const RunResult& result);
 //! Simulates the scenario, streaming trace.csv into `out` as the steps are computed (memory
 //! does not grow with the run's length) and then writing summary.json. result.simulation.trace
 //! stays empty. Does not commit `out`.
-RunResult run_scenario(const Scenario& scenario, OutputDirectory& out);
+RunResult run_scenario(const Scenario& scenario, io::OutputDirectory& out);
 
 //! Writes trace.csv and summary.json of a finished run into `directory` (atomically, through an
 //! OutputDirectory).
 void write_run_outputs(const std::string& directory, const Scenario& scenario,
                        const RunResult& result);
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

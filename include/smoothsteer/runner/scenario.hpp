@@ -21,7 +21,7 @@
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/vehicle/double_track.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 
 struct Scenario {
   std::string name;
@@ -56,7 +56,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
 //! Builds the path of a `path:` section (used by load_scenario; public for tests and tools).
 //! A `segments` path with gear changes also sets *plan (and returns its piece 0); without
 //! `plan` a gear change is rejected with a message naming the piece's `gear` key.
-std::shared_ptr<const Path> make_path(ConfigSection& path_section,
+std::shared_ptr<const Path> make_path(io::ConfigSection& path_section,
                                       const std::string& base_directory,
                                       std::shared_ptr<const PathPlan>* plan = nullptr);
 
@@ -77,4 +77,4 @@ RunResult run_scenario(const Scenario& scenario, SteeringController& controller)
 //! YAML -> JSON (numbers, booleans, strings, lists, mappings).
 nlohmann::json to_json(const YAML::Node& node);
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -9,7 +9,7 @@
 
 #include "smoothsteer/runner/scenario.hpp"
 
-namespace smoothsteer::io {
+namespace smoothsteer::runner {
 
 //! One axis of a grid: key and the values it takes ("controller.k_rob", {"0.2", "0.3"}).
 struct SweepAxis {
@@ -49,4 +49,4 @@ std::vector<SweepRow> run_sweep(const std::string& scenario_file,
 //! CSV table: one column per swept key, then ok, error and every metric.
 std::string sweep_csv(const std::vector<SweepRow>& rows);
 
-}  // namespace smoothsteer::io
+}  // namespace smoothsteer::runner

@@ -165,25 +165,22 @@ struct SimulationResult {
   std::uint64_t plant_fallback_periods = 0;
 };
 
-//! Receives every trace sample as it is produced (e.g. a CSV writer and a metrics accumulator).
+//! Receives every trace sample as it is produced.
 using TraceObserver = std::function<void(const TraceSample&)>;
 
 //! Runs the closed loop from the rear-axle pose `start` (vehicle driving straight at the
 //! profile's initial speed, actuator settled at 0). The controller is reset first. A sample
 //! with a non-finite value is never emitted: the run stops before it with stop_reason
-//! "non_finite" (a non-finite value is never reported with status ok).
+//! "non_finite" (a non-finite value is never reported with status ok). With an `observer`
+//! (e.g. a CSV writer and a metrics accumulator) the run streams: every sample goes to it and
+//! result.trace stays empty, so memory does not grow with the duration; without one the trace
+//! is stored in result.trace. The same holds for every overload below.
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller);
-//! The same, streaming: every sample goes to `observer` and result.trace stays empty, so
-//! memory does not grow with the duration.
-SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller, const TraceObserver& observer);
+                          SteeringController& controller, const TraceObserver& observer = {});
 
-//! The car's steering system that the controller overloads above drive: `controller` with the
+//! The car's steering system that the controller overloads drive: `controller` with the
 //! slip input of parameters.side_slip (none: kinematic, truth: the plant's slip as a sensor,
 //! observer: SideSlipObserver believing the vehicle file times the scales, with the tire model,
 //! and trusting its sensors as much as their simulated noise says).
@@ -200,11 +197,7 @@ SteeringSystemParameters steering_system_parameters(const SideSlipEstimation& sl
 SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringSystem& system);
-SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringSystem& system, const TraceObserver& observer);
+                          SteeringSystem& system, const TraceObserver& observer = {});
 
 //! A path with gear changes (path_plan.hpp, docs/cusps.md) driven by a signed tabulated speed
 //! profile (SpeedProfile::signed_speeds) that comes to rest at every cusp
@@ -216,16 +209,11 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
 SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller, const TraceObserver& observer);
-//! The same, storing the trace in the result.
-SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
-                          const ActuatorParameters& actuator, const SpeedProfile& speed,
-                          const SimulationParameters& parameters, const Pose2& start,
-                          SteeringController& controller);
+                          SteeringController& controller, const TraceObserver& observer = {});
 //! The same with a car's steering system (as the path overloads above).
 SimulationResult simulate(const PathPlan& plan, const VehicleModel& vehicle,
                           const ActuatorParameters& actuator, const SpeedProfile& speed,
                           const SimulationParameters& parameters, const Pose2& start,
-                          SteeringSystem& system, const TraceObserver& observer);
+                          SteeringSystem& system, const TraceObserver& observer = {});
 
 }  // namespace smoothsteer
