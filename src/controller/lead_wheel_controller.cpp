@@ -42,14 +42,14 @@ void LeadWheelController::apply_parameters(const ControllerParameters& parameter
   bounds_ = compute_chain_bounds(parameters_);
   certificate_ = feedforward_certificate(parameters_, bounds_);
   chain_length_squared_ = 0.0;
-  chain_reach_ = chain_reach(parameters_.wheelbases_m.data(), parameters_.order);
-  double shortest = parameters_.order > 0 ? parameters_.wheelbases_m[0] : 0.0;
-  for (int i = 0; i < parameters_.order; ++i) {
-    const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
+  chain_reach_ = chain_reach(parameters_.chain.wheelbases_m.data(), parameters_.chain.order);
+  double shortest = parameters_.chain.order > 0 ? parameters_.chain.wheelbases_m[0] : 0.0;
+  for (int i = 0; i < parameters_.chain.order; ++i) {
+    const double lambda = parameters_.chain.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared_ += lambda * lambda;
     shortest = std::min(shortest, lambda);
   }
-  largest_substep_m_ = parameters_.max_substep_fraction * shortest;
+  largest_substep_m_ = parameters_.chain.max_substep_fraction * shortest;
 }
 
 double LeadWheelController::travel_heading(double heading) const noexcept {
@@ -57,18 +57,18 @@ double LeadWheelController::travel_heading(double heading) const noexcept {
 }
 
 double LeadWheelController::vehicle_steering_angle(double front_angle) const noexcept {
-  if (parameters_.order == 0) return front_angle;
-  const double ratio = parameters_.vehicle_wheelbase_m / parameters_.wheelbases_m[0];
+  if (parameters_.chain.order == 0) return front_angle;
+  const double ratio = parameters_.chain.vehicle_wheelbase_m / parameters_.chain.wheelbases_m[0];
   return direction_ * std::atan(ratio * std::tan(front_angle));
 }
 
 double LeadWheelController::front_angle_from_vehicle(double vehicle_steering_angle) const noexcept {
-  const double ratio = parameters_.wheelbases_m[0] / parameters_.vehicle_wheelbase_m;
+  const double ratio = parameters_.chain.wheelbases_m[0] / parameters_.chain.vehicle_wheelbase_m;
   return std::atan(ratio * std::tan(direction_ * vehicle_steering_angle));
 }
 
 void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexcept {
-  const int n = parameters_.order;
+  const int n = parameters_.chain.order;
   if (n == 0) {
     angles_.fill(0.0);
     feedforward_curvature_ = 0.0;
@@ -80,7 +80,7 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   // zero on both sides). Only an angle outside the invariant set is clamped into it.
   const double front = std::clamp(front_angle_from_vehicle(vehicle_steering_angle),
                                   -bounds_.angle[0], bounds_.angle[0]);
-  stationary_chain(front, parameters_.wheelbases_m.data(), n, angles_);
+  stationary_chain(front, parameters_.chain.wheelbases_m.data(), n, angles_);
   for (int i = 1; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
@@ -88,7 +88,7 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   // The split certificate (steering_certificate.hpp) holds from a state whose switching response
   // is within kbar_sw: kappa_ff takes the chain's stationary lead curvature, saturated at
   // kbar_ff, and the rest, |kappa_n - kappa_ff| <= kbar_n - kbar_ff, is the switching part's.
-  const double rear_curvature = std::tan(front) / parameters_.wheelbases_m[0];
+  const double rear_curvature = std::tan(front) / parameters_.chain.wheelbases_m[0];
   const double bound = parameters_.feedforward_curvature_bound();
   feedforward_curvature_ =
       std::clamp(stationary_lead_curvature(rear_curvature, chain_length_squared_), -bound, bound);
@@ -99,19 +99,19 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
 }
 
 Status LeadWheelController::retune(const ControllerParameters& parameters) noexcept {
-  if (!parameters.is_valid() || parameters.order != parameters_.order) {
+  if (!parameters.is_valid() || parameters.chain.order != parameters_.chain.order) {
     return Status::invalid_input;
   }
-  const int n = parameters.order;
+  const int n = parameters.chain.order;
   const double steering = n > 0 ? vehicle_steering_angle_of_chain() : last_steering_angle_;
   // For n >= 2, d delta_veh / ds depends on (delta_1, delta_2) only: keep it too, so that the
   // command stays C^1 across retunes and a gain schedule adds no steering-acceleration spikes.
   // (For n >= 2, delta_1' does not depend on the lead curvature, so 0 is as good as any.)
   double rate_per_meter = 0.0;
   if (n >= 2) {
-    const double* old_wheelbases = parameters_.wheelbases_m.data();
+    const double* old_wheelbases = parameters_.chain.wheelbases_m.data();
     rate_per_meter =
-        vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / old_wheelbases[0]) *
+        vehicle_angle_gain(angles_[0], parameters_.chain.vehicle_wheelbase_m / old_wheelbases[0]) *
         front_angle_derivatives(angles_, old_wheelbases, n, 0.0).first;
   }
   apply_parameters(parameters);
@@ -124,10 +124,10 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
   if (n >= 2) {
     // delta_1' = tan(delta_2) / (lambda_2 cos delta_1) - tan(delta_1) / lambda_1, solved for
     // delta_2.
-    const double* wheelbases = parameters_.wheelbases_m.data();
+    const double* wheelbases = parameters_.chain.wheelbases_m.data();
     const double front_rate =
         rate_per_meter /
-        vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / wheelbases[0]);
+        vehicle_angle_gain(angles_[0], parameters_.chain.vehicle_wheelbase_m / wheelbases[0]);
     angles_[1] = std::atan(wheelbases[1] * std::cos(angles_[0]) *
                            (front_rate + std::tan(angles_[0]) / wheelbases[0]));
   }
@@ -149,8 +149,9 @@ void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
 }
 
 double LeadWheelController::friction_guard_curvature(double speed) const noexcept {
-  const double limit = parameters_.max_lateral_acceleration_mps2;
-  if (!std::isfinite(limit) || speed <= 0.0 || parameters_.order == 0) {
+  const FrictionGuard& guard = parameters_.friction_guard;
+  const double limit = guard.max_lateral_acceleration_mps2;
+  if (!guard.enabled || speed <= 0.0 || parameters_.chain.order == 0) {
     return std::numeric_limits<double>::infinity();
   }
   return stationary_lead_curvature(limit / (speed * speed), chain_length_squared_);
@@ -165,14 +166,14 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   // finite L_ff the previewed samples (a jump becomes a ramp centred on it), else the path at s
   // and +- one step. The exact rear-axle target reads it at the rear axle, a chain's reach
   // behind the lead wheel; the others at the lead wheel. All read `dynamics_preview_m_` ahead.
-  const double rate = parameters_.feedforward_curvature_rate;
-  const CorneringTarget kind = parameters_.cornering_target;
+  const double rate = parameters_.feedforward.curvature_rate;
+  const CorneringTarget kind = parameters_.feedforward.cornering_target;
   const bool exact = kind == CorneringTarget::rear_axle_exact;
   const double s = lead.arc_length_m + dynamics_preview_m_ - (exact ? chain_reach_ : 0.0);
   const bool limited = std::isfinite(rate) && rate > 0.0;
   PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
-  const bool planned =
-      exact && limited && parameters_.curvature_preview == CurvaturePreview::planned_jumps;
+  const bool planned = exact && limited &&
+                       parameters_.feedforward.curvature_preview == CurvaturePreview::planned_jumps;
   if (planned) {
     // The jet comes from the plan's lagged response below (jump_plan.hpp).
   } else if (exact) {
@@ -196,7 +197,7 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   // vehicle").
   CurvatureJet jet = planned ? planned_rear_curvature_jet(
                                    *path_, s, rate, parameters_.feedforward_curvature_bound(),
-                                   parameters_.wheelbases_m.data(), parameters_.order)
+                                   parameters_.chain.wheelbases_m.data(), parameters_.chain.order)
                              : curvature_jet(curvature.before, curvature.at, curvature.after);
   jet.value = dynamics_gain_ * jet.value + dynamics_bend_m2_ * jet.bend;
   jet.slope *= dynamics_gain_;
@@ -208,8 +209,8 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
     // The chain's angles come from kappa - kappa_d, the lead wheel's position from the path's
     // own geometry, so its curve bends by kappa_d more than the chain's input.
     jet.value -= d;
-    target = rear_axle_target_curve(*path_, lead, jet, parameters_.wheelbases_m.data(),
-                                    parameters_.order);
+    target = rear_axle_target_curve(*path_, lead, jet, parameters_.chain.wheelbases_m.data(),
+                                    parameters_.chain.order);
   } else {
     // The chain's stationary shape on kappa - kappa_d, minus the path's extra bend over the
     // chain's reach l = sum lambda_i, kappa_d l^2 / 2.
@@ -231,10 +232,10 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
     Vec2 rear_position, double rear_travel_heading, bool refresh_target, double switching_bound,
     double boundary_layer) noexcept {
   // Lead-wheel state from projecting its own position (paper Sec. II end, paper_notes §6).
-  const int n = parameters_.order;
+  const int n = parameters_.chain.order;
   ChainGeometry geometry;
-  chain_geometry(rear_position, rear_travel_heading, angles_, parameters_.wheelbases_m.data(), n,
-                 geometry);
+  chain_geometry(rear_position, rear_travel_heading, angles_, parameters_.chain.wheelbases_m.data(),
+                 n, geometry);
   const auto lead = static_cast<std::size_t>(n);
   LeadWheelState state;
   // The target curve is refreshed once per period, which needs the arc length of the closest
@@ -256,20 +257,21 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
 }
 
 void LeadWheelController::update_disturbance_estimate(const ControllerInput& input) noexcept {
-  const double length = parameters_.disturbance_estimation_length_m;
+  const DisturbanceEstimation& estimation = parameters_.disturbance_estimation;
+  const double length = estimation.length_m;
   const double course = input.heading_rad + input.rear_axle_side_slip_rad;
-  if (length > 0.0 && has_previous_pose_ && command_history_count_ > 0 && direction_ > 0.0 &&
+  if (estimation.enabled && has_previous_pose_ && command_history_count_ > 0 && direction_ > 0.0 &&
       input.speed_mps > 0.0) {
     const double distance = norm(input.rear_axle_position - previous_position_);
     if (distance > 1e-6) {
       // The steering in effect over the last period: issued `actuator_delay_s` earlier, plus
       // the lag of the tires' slip that the single-track inversion previews (lag / g metres).
-      const double delay = parameters_.actuator_delay_s + slip_lag_m_ / input.speed_mps;
+      const double delay = compensated_delay_s() + slip_lag_m_ / input.speed_mps;
       const auto age =
           std::min<std::size_t>(command_history_count_ - 1,
                                 static_cast<std::size_t>(std::lround(delay / input.period_s)));
       const double commanded =
-          std::tan(issued_command(age).steering_rad) / parameters_.vehicle_wheelbase_m;
+          std::tan(issued_command(age).steering_rad) / parameters_.chain.vehicle_wheelbase_m;
       // In the chain's units: the inversion steers g kappa for a course curvature kappa
       // (understeer is the model's, not a disturbance), so the disturbance is g kappa - command.
       const double measured = dynamics_gain_ * wrap_angle(course - previous_course_) / distance;
@@ -302,12 +304,12 @@ void LeadWheelController::update_disturbance_estimate(const ControllerInput& inp
 Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const noexcept {
   // The law steers the rear axle's course psi + beta_r (the kinematic model's heading).
   Pose2 pose{input.rear_axle_position, input.heading_rad + input.rear_axle_side_slip_rad};
-  const double delay = parameters_.actuator_delay_s;
+  const double delay = compensated_delay_s();
   if (delay <= 0.0 || command_history_count_ == 0) return pose;
   // The steering in effect during the next `delay` seconds is what was commanded during the last
   // `delay` seconds. Find the oldest such command, then roll the kinematic model forward through
   // them, oldest first, at the current speed.
-  const KinematicSingleTrack model{parameters_.vehicle_wheelbase_m};
+  const KinematicSingleTrack model{parameters_.chain.vehicle_wheelbase_m};
   std::size_t count = 0;
   double covered = 0.0;
   while (count < command_history_count_ && covered < delay)
@@ -321,7 +323,7 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
     const double steering =
         disturbance_estimate_ == 0.0
             ? command.steering_rad
-            : disturbed_steering_angle(command.steering_rad, parameters_.vehicle_wheelbase_m,
+            : disturbed_steering_angle(command.steering_rad, parameters_.chain.vehicle_wheelbase_m,
                                        disturbance_estimate_);
     pose = model.step(pose, steering, input.speed_mps, duration);
   }
@@ -331,8 +333,8 @@ Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const no
 Status LeadWheelController::compute_command(const ControllerInput& input,
                                             ControllerOutput& output) noexcept {
   if (!valid_input(input)) return Status::invalid_input;
-  const int n = parameters_.order;
-  const double* wheelbases = parameters_.wheelbases_m.data();
+  const int n = parameters_.chain.order;
+  const double* wheelbases = parameters_.chain.wheelbases_m.data();
 
   // Reversing: the chain is mirrored so that it always points along the direction of travel
   // (paper Sec. II end: lambda_i < 0 for ds/dt < 0). Switching direction re-initialises the chain
@@ -344,15 +346,18 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   // Where the feedforward reads the path (ControllerParameters::preview_time_s).
   const double speed_magnitude = std::abs(input.speed_mps);
   {
-    const double rear = parameters_.rear_slip_gradient_s2pm;
-    const double front = parameters_.front_slip_gradient_s2pm;
+    const SingleTrackInversion& inversion = parameters_.single_track;
+    const double rear = inversion.enabled ? inversion.rear_slip_gradient_s2pm : 0.0;
+    const double front = inversion.enabled ? inversion.front_slip_gradient_s2pm : 0.0;
+    const double preview_s = inversion.enabled ? inversion.preview_time_s : 0.0;
     const double v2 = speed_magnitude * speed_magnitude;
     const double lag = (front + rear) * v2;  // L (K_f + K_r) v^2 kappa' / L
-    dynamics_gain_ = std::max(0.5, 1.0 + (front - rear) * v2 / parameters_.vehicle_wheelbase_m);
+    dynamics_gain_ =
+        std::max(0.5, 1.0 + (front - rear) * v2 / parameters_.chain.vehicle_wheelbase_m);
     slip_lag_m_ = lag / dynamics_gain_;
-    dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude + slip_lag_m_;
+    dynamics_preview_m_ = preview_s * speed_magnitude + slip_lag_m_;
     // g kappa(s + d) carries lag^2 / (2 g) kappa''; the model asks K_f K_r v^4 kappa''.
-    dynamics_bend_m2_ = parameters_.slip_preview_second_order
+    dynamics_bend_m2_ = parameters_.single_track.second_order
                             ? front * rear * v2 * v2 - 0.5 * lag * lag / dynamics_gain_
                             : 0.0;
   }
@@ -369,7 +374,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   int steps = 1;
   if (n > 0 && distance > 0.0) {
     steps = std::clamp(static_cast<int>(std::ceil(distance / largest_substep_m_)), 1,
-                       parameters_.max_substeps);
+                       parameters_.chain.max_substeps);
   }
   const double step_length = distance / steps;
   Vec2 position = law_pose.position;
@@ -381,7 +386,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   const double feedforward_bound = std::min(parameters_.feedforward_curvature_bound(), guard);
   const double switching_bound = parameters_.switching_curvature_bound();
   const double feedforward_step =
-      step_length > 0.0 ? parameters_.feedforward_curvature_rate * step_length : 0.0;
+      step_length > 0.0 ? parameters_.feedforward.curvature_rate * step_length : 0.0;
   // The governor (steering_governor.hpp) holds the car's limits itself, so the split follows the
   // feedforward along s: the switching part gets what kappa_ff leaves of kbar_n, and with
   // law_length_m its boundary layer scales with it (epsilon = l kbar_sw / 2), which keeps the
@@ -413,18 +418,18 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     if (governed) {
       feedforward_envelope_ =
           std::max(std::abs(feedforward_curvature_),
-                   feedforward_envelope_ - parameters_.lead_curvature_bound * step_length /
+                   feedforward_envelope_ - parameters_.chain.lead_curvature_bound * step_length /
                                                SteeringGovernor::demand_memory_m);
     }
     const double law_bound =
-        governed ? std::max(std::min(parameters_.lead_curvature_bound - feedforward_envelope_,
+        governed ? std::max(std::min(parameters_.chain.lead_curvature_bound - feedforward_envelope_,
                                      far_law_reversal_bound),
                             near_bound)
                  : switching_bound;
     const double law_layer = governed && governor.law_length_m > 0.0
                                  ? 0.5 * governor.law_length_m * law_bound
-                                 : parameters_.boundary_layer;
-    const double catch_up = parameters_.feedforward_catch_up * law_bound;
+                                 : parameters_.law.boundary_layer;
+    const double catch_up = parameters_.feedforward.catch_up * law_bound;
     LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0, law_bound, law_layer);
     if (governed) {
       // Near the path the certified law steers (its authority and boundary layer, as the split
@@ -432,7 +437,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       // variable leaves its boundary layer, fully at twice its width, and keeps the lead until
       // the error is gone: its share decays over SteeringGovernor::far_law_memory_m, so that the
       // slow near-path surface does not finish an engagement (docs/governor.md).
-      const double layer = parameters_.boundary_layer;
+      const double layer = parameters_.law.boundary_layer;
       const SwitchingResult near = dubins_switching_law(lead.lateral_error, lead.relative_heading,
                                                         near_bound, layer, parameters_);
       const double wanted =
@@ -456,7 +461,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     double switching = law +
                        fade * std::clamp(wanted - feedforward_curvature_, -catch_up, catch_up) +
                        matched_disturbance_;
-    if (guard < parameters_.lead_curvature_bound) {
+    if (guard < parameters_.chain.lead_curvature_bound) {
       // |kappa_ff + kappa_sw| <= guard where kappa_sw can reach it; while kappa_ff still ramps
       // down into the guard, kappa_sw pulls with its full authority.
       const double low = std::max(-guard - feedforward_curvature_, -law_bound);
@@ -472,7 +477,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       // angle limit is the car's too). kappa_n is held over the sub-step, as the interval assumes.
       const CurvatureInterval allowed =
           governed_lead_curvature_interval(angles_, parameters_, direction_, governor_step);
-      const double bound = parameters_.lead_curvature_bound;
+      const double bound = parameters_.chain.lead_curvature_bound;
       const double low = std::max(allowed.low, -bound);
       const double high = std::min(allowed.high, bound);
       applied_curvature = low <= high ? std::clamp(applied_curvature, low, high)
@@ -505,7 +510,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   double steering = 0.0, rate = 0.0, acceleration = 0.0;
   int derivatives = 0;
   if (n == 0) {
-    steering = direction_ * std::atan(parameters_.vehicle_wheelbase_m * applied_curvature);
+    steering = direction_ * std::atan(parameters_.chain.vehicle_wheelbase_m * applied_curvature);
   } else {
     const CommandDerivatives d =
         steering_derivatives(angles_, parameters_, direction_, speed_magnitude,
@@ -527,16 +532,17 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   // Diagnostics of the real axles.
   const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
   rear_path_curvature_ = rear_projection.curvature;
-  const Vec2 front_axle = input.rear_axle_position +
-                          parameters_.vehicle_wheelbase_m * unit_from_heading(input.heading_rad);
+  const Vec2 front_axle = input.rear_axle_position + parameters_.chain.vehicle_wheelbase_m *
+                                                         unit_from_heading(input.heading_rad);
   const PathProjection front_projection = path_->project(front_axle, front_hint_);
 
   // Actuator inversion (ControllerParameters::actuator_time_constant_s): the command leads the
   // chain's delta_veh, which the actuator then reproduces. The history and the re-initialisation
   // keep the chain's own delta_veh: that is what the actuator delivers.
-  const double lag = parameters_.actuator_time_constant_s;
-  if (lag > 0.0 && n >= 2) {
-    const double count = parameters_.actuator_lag_count;
+  const ActuatorInversion& actuator = parameters_.actuator_inversion;
+  const double lag = actuator.time_constant_s;
+  if (actuator.enabled && n >= 2) {
+    const double count = actuator.lag_count;
     const double a1 = count * lag;                              // a1 = m T
     const double a2 = 0.5 * count * (count - 1.0) * lag * lag;  // a2 = C(m, 2) T^2
     if (n == 2) {  // derivatives up to n - 1 = 1: the command's rate delta' + a1 delta''

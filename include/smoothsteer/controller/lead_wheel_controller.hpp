@@ -111,6 +111,11 @@ class LeadWheelController final : public SteeringController {
   //! Low-pass of the measured minus the commanded rear-axle curvature
   //! (ControllerParameters::disturbance_estimation_length_m).
   void update_disturbance_estimate(const ControllerInput& input) noexcept;
+  //! The Smith predictor's delay [s]; 0 while the delay compensation is off.
+  double compensated_delay_s() const noexcept {
+    return parameters_.delay_compensation.enabled ? parameters_.delay_compensation.actuator_delay_s
+                                                  : 0.0;
+  }
   //! Largest lead curvature the friction guard allows at `speed` [1/m] (+inf: no guard).
   double friction_guard_curvature(double speed) const noexcept;
 
