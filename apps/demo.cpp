@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
 
     const ChainBounds& bounds = controller.bounds();
     std::printf("smoothsteer demo: n = %d, v = %.1f m/s, start 40 m off the path facing away\n",
-                parameters.order, options.speed_mps);
+                parameters.chain.order, options.speed_mps);
     std::printf("  status                     : %s\n", to_string(result.status));
     std::printf("  final |e| (rear axle)      : %.4f m\n", std::abs(result.final_lateral_error_m));
     std::printf("  max |delta_veh|            : %.4f rad (bound %.4f)\n",

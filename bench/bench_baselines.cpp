@@ -29,7 +29,7 @@ std::unique_ptr<smoothsteer::SaturatedController> make_controller(
   car.max_steering_acceleration_radps2 = 8.0;
   TuningOptions route;
   route.path_curvature_bound = 1.0 / 40.0;
-  route.base.cornering_target = CorneringTarget::rear_axle;
+  route.base.feedforward.cornering_target = CorneringTarget::rear_axle;
   auto scheduled = std::make_unique<ScheduledController>(
       compute_feedforward_schedule(car, route, speed_grid(0.5, 10.5, 0.5)), setup.path);
   return std::make_unique<SaturatedController>(std::move(scheduled), setup.limits, name);

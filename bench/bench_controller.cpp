@@ -60,16 +60,18 @@ enum class Law {
 
 ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
   ControllerParameters parameters;
-  parameters.order = order;
-  parameters.lead_curvature_bound = 0.1;
+  parameters.chain.order = order;
+  parameters.chain.lead_curvature_bound = 0.1;
   if (law == Law::preview || law == Law::exact || law == Law::planned || law == Law::governed) {
-    parameters.feedforward_curvature_rate = 0.005;
+    parameters.feedforward.curvature_rate = 0.005;
   }
   if (law == Law::exact || law == Law::planned || law == Law::governed) {
-    parameters.cornering_target = CorneringTarget::rear_axle_exact;
-    parameters.rear_slip_gradient_s2pm = parameters.front_slip_gradient_s2pm = 0.00465;
+    parameters.feedforward.cornering_target = CorneringTarget::rear_axle_exact;
+    parameters.single_track = {
+        .enabled = true, .rear_slip_gradient_s2pm = 0.00465, .front_slip_gradient_s2pm = 0.00465};
   }
-  if (law == Law::planned) parameters.curvature_preview = CurvaturePreview::planned_jumps;
+  if (law == Law::planned)
+    parameters.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
   if (law == Law::governed && order >= 1 && order <= 2) {
     parameters.governor.enabled = true;
     parameters.governor.max_steering_rate_radps = 0.4;
@@ -78,9 +80,9 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
     parameters.governor.certified_switching_bound = 0.005;
   }
   if (law == Law::paper) {
-    parameters.feedforward_share = 0.0;
-    parameters.boundary_layer = 0.0;
-    parameters.cornering_target = CorneringTarget::lead_wheel;
+    parameters.feedforward.share = 0.0;
+    parameters.law.boundary_layer = 0.0;
+    parameters.feedforward.cornering_target = CorneringTarget::lead_wheel;
   }
   return parameters;
 }

@@ -38,8 +38,8 @@ std::shared_ptr<const Path> curved_path(std::int64_t points) {
 
 ControllerParameters second_order() {
   ControllerParameters parameters;
-  parameters.order = 2;
-  parameters.lead_curvature_bound = 0.1;
+  parameters.chain.order = 2;
+  parameters.chain.lead_curvature_bound = 0.1;
   return parameters;
 }
 

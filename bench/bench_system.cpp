@@ -157,7 +157,7 @@ SteeringSystem default_controller_system(SlipInput slip) {
       SteeringSystemParameters::from_vehicle(car().vehicle, ObserverTireModel::magic_formula);
   parameters.slip_input = slip;
   ControllerParameters controller;
-  controller.vehicle_wheelbase_m = car().vehicle.wheelbase_m();
+  controller.chain.vehicle_wheelbase_m = car().vehicle.wheelbase_m();
   return SteeringSystem(std::make_unique<LeadWheelController>(controller, lane_change_path()),
                         parameters);
 }

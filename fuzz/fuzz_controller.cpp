@@ -69,30 +69,39 @@ ControllerParameters read_parameters(Reader& in) {
   };
   auto real = [&in] { return in.real(); };
   auto integer = [&in] { return in.integer(); };
-  maybe(p.order, integer);
-  maybe(p.vehicle_wheelbase_m, real);
-  for (double& lambda : p.wheelbases_m) maybe(lambda, real);
-  maybe(p.lead_curvature_bound, real);
-  maybe(p.k_rob, real);
-  maybe(p.approach_angle_rad, real);
-  maybe(p.feedforward_share, real);
-  maybe(p.feedforward_curvature_rate, real);
-  maybe(p.feedforward_catch_up, real);
-  maybe(p.boundary_layer, real);
-  maybe(p.actuator_delay_s, real);
-  maybe(p.preview_time_s, real);
-  maybe(p.disturbance_estimation_length_m, real);
-  maybe(p.rear_slip_gradient_s2pm, real);
-  maybe(p.front_slip_gradient_s2pm, real);
-  maybe(p.slip_preview_second_order, [&in] { return (in.byte() & 1u) != 0; });
-  maybe(p.max_lateral_acceleration_mps2, real);
-  maybe(p.actuator_time_constant_s, real);
-  maybe(p.actuator_lag_count, integer);
-  maybe(p.surface, [&in] { return static_cast<SlidingSurface>(in.integer()); });
-  maybe(p.cornering_target, [&in] { return static_cast<CorneringTarget>(in.integer()); });
-  maybe(p.curvature_preview, [&in] { return static_cast<CurvaturePreview>(in.integer()); });
-  maybe(p.max_substep_fraction, real);
-  maybe(p.max_substeps, integer);
+  auto flag = [&in] { return (in.byte() & 1u) != 0; };
+  maybe(p.chain.order, integer);
+  maybe(p.chain.vehicle_wheelbase_m, real);
+  for (double& lambda : p.chain.wheelbases_m) maybe(lambda, real);
+  maybe(p.chain.lead_curvature_bound, real);
+  maybe(p.law.k_rob, real);
+  maybe(p.law.approach_angle_rad, real);
+  maybe(p.feedforward.share, real);
+  maybe(p.feedforward.curvature_rate, real);
+  maybe(p.feedforward.catch_up, real);
+  maybe(p.law.boundary_layer, real);
+  maybe(p.delay_compensation.actuator_delay_s, real);
+  maybe(p.single_track.preview_time_s, real);
+  maybe(p.disturbance_estimation.length_m, real);
+  maybe(p.single_track.rear_slip_gradient_s2pm, real);
+  maybe(p.single_track.front_slip_gradient_s2pm, real);
+  maybe(p.single_track.second_order, flag);
+  maybe(p.friction_guard.max_lateral_acceleration_mps2, real);
+  maybe(p.actuator_inversion.time_constant_s, real);
+  maybe(p.actuator_inversion.lag_count, integer);
+  maybe(p.law.surface, [&in] { return static_cast<SlidingSurface>(in.integer()); });
+  maybe(p.feedforward.cornering_target,
+        [&in] { return static_cast<CorneringTarget>(in.integer()); });
+  maybe(p.feedforward.curvature_preview,
+        [&in] { return static_cast<CurvaturePreview>(in.integer()); });
+  maybe(p.chain.max_substep_fraction, real);
+  maybe(p.chain.max_substeps, integer);
+  // The optional groups' switches, so that inconsistent flags reach validate() as well.
+  maybe(p.delay_compensation.enabled, flag);
+  maybe(p.single_track.enabled, flag);
+  maybe(p.disturbance_estimation.enabled, flag);
+  maybe(p.friction_guard.enabled, flag);
+  maybe(p.actuator_inversion.enabled, flag);
   return p;
 }
 

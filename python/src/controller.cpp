@@ -11,24 +11,96 @@
 
 #include "bindings.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/parameter_fields.hpp"
 
 namespace smoothsteer::python {
 namespace {
 
-//! lambda_1..lambda_n [m]: the first `order` entries (at least one) are shown; setting k values
-//! replaces the first k and keeps the rest.
-std::vector<double> wheelbases(const ControllerParameters& p) {
-  const int shown = std::clamp(p.order, 1, ControllerParameters::max_order);
-  return {p.wheelbases_m.begin(), p.wheelbases_m.begin() + shown};
+std::vector<double> chain_wheelbases(const ChainParameters& chain) {
+  const int shown = std::clamp(chain.order, 1, ControllerParameters::max_order);
+  return {chain.wheelbases_m.begin(), chain.wheelbases_m.begin() + shown};
 }
 
-void set_wheelbases(ControllerParameters& p, const std::vector<double>& values) {
-  if (values.empty() || values.size() > p.wheelbases_m.size()) {
+void set_chain_wheelbases(ChainParameters& chain, const std::vector<double>& values) {
+  if (values.empty() || values.size() > chain.wheelbases_m.size()) {
     throw py::value_error("ControllerParameters.wheelbases_m: give 1 to " +
                           std::to_string(ControllerParameters::max_order) + " lengths [m], got " +
                           std::to_string(values.size()));
   }
-  std::copy(values.begin(), values.end(), p.wheelbases_m.begin());
+  std::copy(values.begin(), values.end(), chain.wheelbases_m.begin());
+}
+
+//! lambda_1..lambda_n [m]: the first `order` entries (at least one) are shown; setting k values
+//! replaces the first k and keeps the rest.
+std::vector<double> wheelbases(const ControllerParameters& p) {
+  return chain_wheelbases(p.chain);
+}
+
+void set_wheelbases(ControllerParameters& p, const std::vector<double>& values) {
+  set_chain_wheelbases(p.chain, values);
+}
+
+template <typename Group>
+Group from_keywords(const py::kwargs& keywords) {
+  py::object object = py::cast(Group{});
+  set_attributes(object, keywords);
+  return object.cast<Group>();
+}
+
+//! A field of the table as Python sees it: float, int, bool or the enumeration.
+py::object field_to_python(const ParameterField& field, const ControllerParameters& p) {
+  const double value = field.get(p);
+  switch (field.kind) {
+    case FieldKind::integer:
+      return py::int_(static_cast<int>(value));
+    case FieldKind::boolean:
+      return py::bool_(value != 0.0);
+    case FieldKind::choice:
+      if (field.name == "surface") return py::cast(p.law.surface);
+      if (field.name == "cornering_target") return py::cast(p.feedforward.cornering_target);
+      return py::cast(p.feedforward.curvature_preview);
+    default:
+      return py::float_(value);
+  }
+}
+
+void field_from_python(const ParameterField& field, ControllerParameters& p,
+                       const py::object& value) {
+  switch (field.kind) {
+    case FieldKind::integer:
+      field.set(p, value.cast<int>());
+      return;
+    case FieldKind::boolean:
+      field.set(p, value.cast<bool>() ? 1.0 : 0.0);
+      return;
+    case FieldKind::choice:
+      if (field.name == "surface") {
+        p.law.surface = value.cast<SlidingSurface>();
+      } else if (field.name == "cornering_target") {
+        p.feedforward.cornering_target = value.cast<CorneringTarget>();
+      } else {
+        p.feedforward.curvature_preview = value.cast<CurvaturePreview>();
+      }
+      return;
+    default:
+      field.set(p, value.cast<double>());
+  }
+}
+
+py::list field_rows() {
+  py::list rows;
+  for (const ParameterField& field : controller_parameter_fields()) {
+    py::dict row;
+    row["name"] = std::string(field.name);
+    row["member"] = std::string(field.member);
+    row["unit"] = std::string(field.unit);
+    row["rule"] = std::string(field.rule);
+    row["doc"] = std::string(field.doc);
+    row["default"] = field_default_text(field);
+    row["scenario_key"] = field.scenario == ScenarioKey::direct;
+    rows.append(row);
+  }
+  return rows;
 }
 
 //! One update() call; a non-ok status raises ControllerError.
@@ -91,54 +163,95 @@ void bind_controller(py::module_& m) {
       .def_readwrite("certified_switching_bound", &G::certified_switching_bound,
                      "the near-path law's authority [1/m]; 0 = kbar_sw");
 
+  // The groups, each a class of its own: p.chain.order, p.single_track.preview_time_s, ...
+  py::class_<ChainParameters>(m, "ChainParameters", "The fictive trailer chain (ChainParameters).")
+      .def(py::init(&from_keywords<ChainParameters>))
+      .def_readwrite("order", &ChainParameters::order)
+      .def_readwrite("vehicle_wheelbase_m", &ChainParameters::vehicle_wheelbase_m)
+      .def_property("wheelbases_m", &chain_wheelbases, &set_chain_wheelbases,
+                    "lambda_1..lambda_n [m]")
+      .def_readwrite("lead_curvature_bound", &ChainParameters::lead_curvature_bound)
+      .def_readwrite("max_substep_fraction", &ChainParameters::max_substep_fraction)
+      .def_readwrite("max_substeps", &ChainParameters::max_substeps);
+  py::class_<SwitchingLawParameters>(m, "SwitchingLawParameters", "The switching law.")
+      .def(py::init(&from_keywords<SwitchingLawParameters>))
+      .def_readwrite("surface", &SwitchingLawParameters::surface)
+      .def_readwrite("k_rob", &SwitchingLawParameters::k_rob)
+      .def_readwrite("approach_angle_rad", &SwitchingLawParameters::approach_angle_rad)
+      .def_readwrite("boundary_layer", &SwitchingLawParameters::boundary_layer);
+  py::class_<FeedforwardParameters>(m, "FeedforwardParameters", "The curvature feedforward.")
+      .def(py::init(&from_keywords<FeedforwardParameters>))
+      .def_readwrite("share", &FeedforwardParameters::share)
+      .def_readwrite("curvature_rate", &FeedforwardParameters::curvature_rate)
+      .def_readwrite("catch_up", &FeedforwardParameters::catch_up)
+      .def_readwrite("cornering_target", &FeedforwardParameters::cornering_target)
+      .def_readwrite("curvature_preview", &FeedforwardParameters::curvature_preview);
+  py::class_<DelayCompensation>(m, "DelayCompensation", "The Smith predictor (optional).")
+      .def(py::init(&from_keywords<DelayCompensation>))
+      .def_readwrite("enabled", &DelayCompensation::enabled)
+      .def_readwrite("actuator_delay_s", &DelayCompensation::actuator_delay_s);
+  py::class_<SingleTrackInversion>(m, "SingleTrackInversion",
+                                   "The single-track inversion of the feedforward (optional).")
+      .def(py::init(&from_keywords<SingleTrackInversion>))
+      .def_readwrite("enabled", &SingleTrackInversion::enabled)
+      .def_readwrite("rear_slip_gradient_s2pm", &SingleTrackInversion::rear_slip_gradient_s2pm)
+      .def_readwrite("front_slip_gradient_s2pm", &SingleTrackInversion::front_slip_gradient_s2pm)
+      .def_readwrite("preview_time_s", &SingleTrackInversion::preview_time_s)
+      .def_readwrite("second_order", &SingleTrackInversion::second_order);
+  py::class_<DisturbanceEstimation>(m, "DisturbanceEstimation",
+                                    "The plant-curvature estimate (optional).")
+      .def(py::init(&from_keywords<DisturbanceEstimation>))
+      .def_readwrite("enabled", &DisturbanceEstimation::enabled)
+      .def_readwrite("length_m", &DisturbanceEstimation::length_m);
+  py::class_<FrictionGuard>(m, "FrictionGuard", "The friction guard (optional).")
+      .def(py::init(&from_keywords<FrictionGuard>))
+      .def_readwrite("enabled", &FrictionGuard::enabled)
+      .def_readwrite("max_lateral_acceleration_mps2",
+                     &FrictionGuard::max_lateral_acceleration_mps2);
+  py::class_<ActuatorInversion>(m, "ActuatorInversion",
+                                "The steering-actuator inversion (optional).")
+      .def(py::init(&from_keywords<ActuatorInversion>))
+      .def_readwrite("enabled", &ActuatorInversion::enabled)
+      .def_readwrite("time_constant_s", &ActuatorInversion::time_constant_s)
+      .def_readwrite("lag_count", &ActuatorInversion::lag_count);
+
   using P = ControllerParameters;
-  py::class_<P>(m, "ControllerParameters",
-                "Parameters of the lead-wheel controller, SI units; keyword arguments set any "
-                "field: ControllerParameters(order=2, lead_curvature_bound=0.1).")
+  py::class_<P> parameters_class(
+      m, "ControllerParameters",
+      "Parameters of the lead-wheel controller, SI units, in groups (p.chain, p.law, "
+      "p.feedforward, the optional compensations, p.governor). Keyword arguments set any field "
+      "by its flat name from the field table: ControllerParameters(order=2, "
+      "lead_curvature_bound=0.1, actuator_delay_s=0.048); a compensation's flat field switches "
+      "its group on (0, resp. inf for max_lateral_acceleration_mps2, off).");
+  parameters_class
       .def(py::init([](const py::kwargs& keywords) {
-        py::object parameters = py::cast(P{});
-        set_attributes(parameters, keywords);
-        return parameters.cast<P>();
+        py::object object = py::cast(P{});
+        set_attributes(object, keywords);
+        return object.cast<P>();
       }))
-      .def_readwrite("order", &P::order, "n: fictive wheels; delta is C^(n-1)")
-      .def_readwrite("vehicle_wheelbase_m", &P::vehicle_wheelbase_m, "lambda_veh [m]")
-      .def_property("wheelbases_m", &wheelbases, &set_wheelbases,
-                    "lambda_1..lambda_n [m]; lambda_1 = lambda, lambda_2 = lambda_l for n = 2")
-      .def_readwrite("lead_curvature_bound", &P::lead_curvature_bound, "kbar_n [1/m]")
-      .def_readwrite("k_rob", &P::k_rob, "robustness margin in [0, 1)")
-      .def_readwrite("approach_angle_rad", &P::approach_angle_rad, "psi_max [rad]")
-      .def_readwrite("feedforward_share", &P::feedforward_share, "kbar_ff / kbar_n in [0, 1)")
-      .def_readwrite("feedforward_curvature_rate", &P::feedforward_curvature_rate,
-                     "L_ff [1/m^2]; inf = unlimited")
-      .def_readwrite("feedforward_catch_up", &P::feedforward_catch_up,
-                     "share of kbar_sw that makes up the feedforward's rate-limit lag, in [0, 1]")
-      .def_readwrite("boundary_layer", &P::boundary_layer, "epsilon >= 0 [rad]")
-      .def_readwrite("actuator_delay_s", &P::actuator_delay_s,
-                     "Smith predictor's delay [s], in [0, max_actuator_delay_s]; 0 = off")
-      .def_readwrite("preview_time_s", &P::preview_time_s,
-                     "extra feedforward preview [s] times |v|, in [0, max_actuator_delay_s]")
-      .def_readwrite("disturbance_estimation_length_m", &P::disturbance_estimation_length_m,
-                     "low-pass length of the plant-curvature estimate [m]; 0 = off, else "
-                     "[1, 1000]")
-      .def_readwrite("rear_slip_gradient_s2pm", &P::rear_slip_gradient_s2pm,
-                     "K_r of the single-track inversion [s^2/m], in [0, 0.1]")
-      .def_readwrite("front_slip_gradient_s2pm", &P::front_slip_gradient_s2pm,
-                     "K_f of the single-track inversion [s^2/m], in [0, 0.1]")
-      .def_readwrite("slip_preview_second_order", &P::slip_preview_second_order,
-                     "with the inversion's K_f K_r v^4 kappa'' term")
-      .def_readwrite("max_lateral_acceleration_mps2", &P::max_lateral_acceleration_mps2,
-                     "friction guard a_max [m/s^2]; inf = off")
-      .def_readwrite("actuator_time_constant_s", &P::actuator_time_constant_s,
-                     "T of the actuator inversion (1 + T s)^m [s], in [0, 0.5]; 0 = off")
-      .def_readwrite("actuator_lag_count", &P::actuator_lag_count,
-                     "m of the actuator inversion, in [1, 3]")
-      .def_readwrite("surface", &P::surface)
-      .def_readwrite("cornering_target", &P::cornering_target)
-      .def_readwrite("curvature_preview", &P::curvature_preview)
-      .def_readwrite("max_substep_fraction", &P::max_substep_fraction,
-                     "largest RK4 step of the chain over the shortest wheelbase")
-      .def_readwrite("max_substeps", &P::max_substeps, "sub-steps per period at most")
-      .def_readwrite("governor", &P::governor, "SteeringGovernor (docs/governor.md)")
+      .def_readwrite("chain", &P::chain)
+      .def_readwrite("law", &P::law)
+      .def_readwrite("feedforward", &P::feedforward)
+      .def_readwrite("delay_compensation", &P::delay_compensation)
+      .def_readwrite("single_track", &P::single_track)
+      .def_readwrite("disturbance_estimation", &P::disturbance_estimation)
+      .def_readwrite("friction_guard", &P::friction_guard)
+      .def_readwrite("actuator_inversion", &P::actuator_inversion)
+      .def_readwrite("governor", &P::governor, "SteeringGovernor (docs/governor.md)");
+  // The flat names of the field table, as attributes and keywords (the governor's fields are
+  // reached as p.governor.<field>).
+  for (const ParameterField& field : controller_parameter_fields()) {
+    if (field.group == ParameterGroup::governor) continue;
+    if (field.kind == FieldKind::wheelbases) {
+      parameters_class.def_property("wheelbases_m", &wheelbases, &set_wheelbases, field.doc.data());
+      continue;
+    }
+    const ParameterField* f = &field;
+    parameters_class.def_property(
+        field.name.data(), [f](const P& p) { return field_to_python(*f, p); },
+        [f](P& p, const py::object& value) { field_from_python(*f, p, value); }, field.doc.data());
+  }
+  parameters_class
       .def("validate", &P::validate, "Raises ValueError naming the field, value and rule.")
       .def_readonly_static("max_order", &P::max_order)
       .def_readonly_static("max_actuator_delay_s", &P::max_actuator_delay_s)
@@ -149,11 +262,13 @@ void bind_controller(py::module_& m) {
       .def_static("paper_c0", &P::paper_c0, py::arg("vehicle_wheelbase_m"),
                   py::arg("front_curvature_bound"), py::arg("k_rob"),
                   "The C^0 controller (n = 1), eq. (ext1).")
+      .def_static("fields", &field_rows,
+                  "The field table: one dict per field (name, member, kind, unit, rule, doc).")
       .def("__repr__", [](const P& p) {
-        return "ControllerParameters(order=" + std::to_string(p.order) +
-               ", vehicle_wheelbase_m=" + std::to_string(p.vehicle_wheelbase_m) +
-               ", lead_curvature_bound=" + std::to_string(p.lead_curvature_bound) +
-               ", k_rob=" + std::to_string(p.k_rob) + ")";
+        return "ControllerParameters(order=" + std::to_string(p.chain.order) +
+               ", vehicle_wheelbase_m=" + std::to_string(p.chain.vehicle_wheelbase_m) +
+               ", lead_curvature_bound=" + std::to_string(p.chain.lead_curvature_bound) +
+               ", k_rob=" + std::to_string(p.law.k_rob) + ")";
       });
 
   using D = TrackingDiagnostics;

@@ -108,6 +108,17 @@ def struct_fields(header, struct):
 BOUND_STRUCTS = [
     ("controller/controller_parameters.hpp", "ControllerParameters", "ControllerParameters", []),
     ("controller/controller_parameters.hpp", "SteeringGovernor", "SteeringGovernor", []),
+    ("controller/controller_parameters.hpp", "ChainParameters", "ChainParameters", []),
+    ("controller/controller_parameters.hpp", "SwitchingLawParameters", "SwitchingLawParameters",
+     []),
+    ("controller/controller_parameters.hpp", "FeedforwardParameters", "FeedforwardParameters",
+     []),
+    ("controller/controller_parameters.hpp", "DelayCompensation", "DelayCompensation", []),
+    ("controller/controller_parameters.hpp", "SingleTrackInversion", "SingleTrackInversion", []),
+    ("controller/controller_parameters.hpp", "DisturbanceEstimation", "DisturbanceEstimation",
+     []),
+    ("controller/controller_parameters.hpp", "FrictionGuard", "FrictionGuard", []),
+    ("controller/controller_parameters.hpp", "ActuatorInversion", "ActuatorInversion", []),
     ("tuning/gain_schedule.hpp", "TuningOptions", "TuningOptions", []),
     ("tuning/vehicle_steering_system.hpp", "SteeringSystemOptions", "SteeringSystemOptions", []),
     ("tuning/vehicle_steering_system.hpp", "VehicleDescription", "VehicleDescription", []),
@@ -136,18 +147,16 @@ def test_every_cpp_field_is_a_keyword(header, struct, python_name, unbound):
 
 
 def test_the_header_reader_sees_every_kind_of_declaration():
-    # Arrays with initializer lists, nested structs, enums, bools and ints: the 25 fields of
-    # ControllerParameters as of this test (a field added since is simply more).
-    known = ["order", "vehicle_wheelbase_m", "wheelbases_m", "lead_curvature_bound", "k_rob",
-             "approach_angle_rad", "feedforward_share", "feedforward_curvature_rate",
-             "feedforward_catch_up", "boundary_layer", "actuator_delay_s", "preview_time_s",
-             "disturbance_estimation_length_m", "rear_slip_gradient_s2pm",
-             "front_slip_gradient_s2pm", "slip_preview_second_order",
-             "max_lateral_acceleration_mps2", "actuator_time_constant_s", "actuator_lag_count",
-             "governor", "surface", "cornering_target", "curvature_preview",
-             "max_substep_fraction", "max_substeps"]
+    # Arrays with initializer lists, nested structs, enums, bools and ints: the groups of
+    # ControllerParameters and the fields of its chain group as of this test (a field added
+    # since is simply more).
+    known = ["chain", "law", "feedforward", "delay_compensation", "single_track",
+             "disturbance_estimation", "friction_guard", "actuator_inversion", "governor"]
     fields = struct_fields("controller/controller_parameters.hpp", "ControllerParameters")
     assert set(known) <= set(fields), sorted(set(known) - set(fields))
+    chain = struct_fields("controller/controller_parameters.hpp", "ChainParameters")
+    assert {"order", "vehicle_wheelbase_m", "wheelbases_m", "lead_curvature_bound",
+            "max_substep_fraction", "max_substeps"} <= set(chain), chain
     assert not {"max_order", "validate", "paper_c1", "feedforward_curvature_bound"} & set(fields)
 
 

@@ -25,11 +25,12 @@ int main(int argc, char** argv) {
       shape == "circle" ? Path::circle({0.0, 0.0}, 30.0)
                         : Path::from_waypoints({{0, 0}, {20, 5}, {40, -5}, {60, 10}, {80, 0}}));
   ControllerParameters parameters;
-  parameters.order = std::atoi(argv[2]);
-  parameters.lead_curvature_bound = std::strtod(argv[3], nullptr);
-  parameters.k_rob = std::strtod(argv[4], nullptr);
-  parameters.feedforward_share = std::strtod(argv[5], nullptr);
-  parameters.actuator_delay_s = std::strtod(argv[6], nullptr);
+  parameters.chain.order = std::atoi(argv[2]);
+  parameters.chain.lead_curvature_bound = std::strtod(argv[3], nullptr);
+  parameters.law.k_rob = std::strtod(argv[4], nullptr);
+  parameters.feedforward.share = std::strtod(argv[5], nullptr);
+  parameters.delay_compensation.actuator_delay_s = std::strtod(argv[6], nullptr);
+  parameters.delay_compensation.enabled = parameters.delay_compensation.actuator_delay_s != 0.0;
   const std::string invalid = parameters.validation_error();
   if (!invalid.empty()) {  // the constructor would throw this message
     std::printf("invalid %s\n", invalid.c_str());

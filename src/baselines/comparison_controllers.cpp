@@ -64,10 +64,10 @@ ControllerParameters proposed_parameters(const ComparisonSetup& setup, int order
                                                   setup.k_rob);
   const double rate_per_meter = setup.limits.rate_radps / setup.nominal_speed_mps;
   double low = 0.0;
-  double high = 1.0 / parameters.wheelbases_m[static_cast<std::size_t>(order - 1)];
+  double high = 1.0 / parameters.chain.wheelbases_m[static_cast<std::size_t>(order - 1)];
   for (int iteration = 0; iteration < 60; ++iteration) {
     const double middle = 0.5 * (low + high);
-    parameters.lead_curvature_bound = middle;
+    parameters.chain.lead_curvature_bound = middle;
     bool fits = parameters.validation_error().empty();
     if (fits) {
       const ChainBounds bounds = compute_chain_bounds(parameters);
@@ -76,7 +76,7 @@ ControllerParameters proposed_parameters(const ComparisonSetup& setup, int order
     }
     (fits ? low : high) = middle;
   }
-  parameters.lead_curvature_bound = low;
+  parameters.chain.lead_curvature_bound = low;
   parameters.validate();
   return parameters;
 }
@@ -88,10 +88,10 @@ std::unique_ptr<SteeringController> make_inner(std::string_view name,
     // Built field by field: paper_c0 would validate an n = 1 chain, whose invariant set needs
     // kbar lambda < 1, which tan(delta-bar) >= 1 (delta-bar >= pi/4) breaks.
     ControllerParameters parameters;
-    parameters.order = 0;
-    parameters.vehicle_wheelbase_m = lambda;
-    parameters.lead_curvature_bound = std::tan(setup.limits.angle_rad) / lambda;
-    parameters.k_rob = setup.k_rob;
+    parameters.chain.order = 0;
+    parameters.chain.vehicle_wheelbase_m = lambda;
+    parameters.chain.lead_curvature_bound = std::tan(setup.limits.angle_rad) / lambda;
+    parameters.law.k_rob = setup.k_rob;
     return std::make_unique<LeadWheelController>(parameters, setup.path);
   }
   if (name == "proposed_c0") {

@@ -26,19 +26,19 @@ SwitchingResult dubins_switching_law(double lateral_error, double relative_headi
                                      double curvature_bound,
                                      const ControllerParameters& parameters) noexcept {
   return dubins_switching_law(lateral_error, relative_heading, curvature_bound,
-                              parameters.boundary_layer, parameters);
+                              parameters.law.boundary_layer, parameters);
 }
 
 SwitchingResult dubins_switching_law(double lateral_error, double relative_heading,
                                      double curvature_bound, double boundary_layer,
                                      const ControllerParameters& parameters) noexcept {
   SwitchingResult result;
-  if (parameters.surface == SlidingSurface::paper) {
-    result.sliding_variable =
-        paper_sliding_variable(lateral_error, relative_heading, curvature_bound, parameters.k_rob);
+  if (parameters.law.surface == SlidingSurface::paper) {
+    result.sliding_variable = paper_sliding_variable(lateral_error, relative_heading,
+                                                     curvature_bound, parameters.law.k_rob);
   } else {
-    double reference = global_reference_heading(lateral_error, curvature_bound, parameters.k_rob,
-                                                parameters.approach_angle_rad);
+    double reference = global_reference_heading(
+        lateral_error, curvature_bound, parameters.law.k_rob, parameters.law.approach_angle_rad);
     if (boundary_layer > 0.0) {
       // Near the path the finite-time curve psi ~ -sign(e) sqrt(2 k |e|) has infinite slope; a
       // linear zone psi_ref = -e / l with l = 4 epsilon / kbar (four heading time constants of

@@ -5,8 +5,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "smoothsteer/controller/actuator_inversion.hpp"
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/feedforward.hpp"
+#include "smoothsteer/controller/feedforward_split.hpp"
 #include "smoothsteer/controller/jump_plan.hpp"
 #include "smoothsteer/controller/steering_governor.hpp"
 #include "smoothsteer/math/angles.hpp"
@@ -42,14 +44,14 @@ void LeadWheelController::apply_parameters(const ControllerParameters& parameter
   bounds_ = compute_chain_bounds(parameters_);
   certificate_ = feedforward_certificate(parameters_, bounds_);
   chain_length_squared_ = 0.0;
-  chain_reach_ = chain_reach(parameters_.wheelbases_m.data(), parameters_.order);
-  double shortest = parameters_.order > 0 ? parameters_.wheelbases_m[0] : 0.0;
-  for (int i = 0; i < parameters_.order; ++i) {
-    const double lambda = parameters_.wheelbases_m[static_cast<std::size_t>(i)];
+  chain_reach_ = chain_reach(parameters_.chain.wheelbases_m.data(), parameters_.chain.order);
+  double shortest = parameters_.chain.order > 0 ? parameters_.chain.wheelbases_m[0] : 0.0;
+  for (int i = 0; i < parameters_.chain.order; ++i) {
+    const double lambda = parameters_.chain.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared_ += lambda * lambda;
     shortest = std::min(shortest, lambda);
   }
-  largest_substep_m_ = parameters_.max_substep_fraction * shortest;
+  largest_substep_m_ = parameters_.chain.max_substep_fraction * shortest;
 }
 
 double LeadWheelController::travel_heading(double heading) const noexcept {
@@ -57,18 +59,18 @@ double LeadWheelController::travel_heading(double heading) const noexcept {
 }
 
 double LeadWheelController::vehicle_steering_angle(double front_angle) const noexcept {
-  if (parameters_.order == 0) return front_angle;
-  const double ratio = parameters_.vehicle_wheelbase_m / parameters_.wheelbases_m[0];
+  if (parameters_.chain.order == 0) return front_angle;
+  const double ratio = parameters_.chain.vehicle_wheelbase_m / parameters_.chain.wheelbases_m[0];
   return direction_ * std::atan(ratio * std::tan(front_angle));
 }
 
 double LeadWheelController::front_angle_from_vehicle(double vehicle_steering_angle) const noexcept {
-  const double ratio = parameters_.wheelbases_m[0] / parameters_.vehicle_wheelbase_m;
+  const double ratio = parameters_.chain.wheelbases_m[0] / parameters_.chain.vehicle_wheelbase_m;
   return std::atan(ratio * std::tan(direction_ * vehicle_steering_angle));
 }
 
 void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexcept {
-  const int n = parameters_.order;
+  const int n = parameters_.chain.order;
   if (n == 0) {
     angles_.fill(0.0);
     feedforward_curvature_ = 0.0;
@@ -80,7 +82,7 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   // zero on both sides). Only an angle outside the invariant set is clamped into it.
   const double front = std::clamp(front_angle_from_vehicle(vehicle_steering_angle),
                                   -bounds_.angle[0], bounds_.angle[0]);
-  stationary_chain(front, parameters_.wheelbases_m.data(), n, angles_);
+  stationary_chain(front, parameters_.chain.wheelbases_m.data(), n, angles_);
   for (int i = 1; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     angles_[k] = std::clamp(angles_[k], -bounds_.angle[k], bounds_.angle[k]);
@@ -88,7 +90,7 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   // The split certificate (steering_certificate.hpp) holds from a state whose switching response
   // is within kbar_sw: kappa_ff takes the chain's stationary lead curvature, saturated at
   // kbar_ff, and the rest, |kappa_n - kappa_ff| <= kbar_n - kbar_ff, is the switching part's.
-  const double rear_curvature = std::tan(front) / parameters_.wheelbases_m[0];
+  const double rear_curvature = std::tan(front) / parameters_.chain.wheelbases_m[0];
   const double bound = parameters_.feedforward_curvature_bound();
   feedforward_curvature_ =
       std::clamp(stationary_lead_curvature(rear_curvature, chain_length_squared_), -bound, bound);
@@ -99,19 +101,19 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
 }
 
 Status LeadWheelController::retune(const ControllerParameters& parameters) noexcept {
-  if (!parameters.is_valid() || parameters.order != parameters_.order) {
+  if (!parameters.is_valid() || parameters.chain.order != parameters_.chain.order) {
     return Status::invalid_input;
   }
-  const int n = parameters.order;
+  const int n = parameters.chain.order;
   const double steering = n > 0 ? vehicle_steering_angle_of_chain() : last_steering_angle_;
   // For n >= 2, d delta_veh / ds depends on (delta_1, delta_2) only: keep it too, so that the
   // command stays C^1 across retunes and a gain schedule adds no steering-acceleration spikes.
   // (For n >= 2, delta_1' does not depend on the lead curvature, so 0 is as good as any.)
   double rate_per_meter = 0.0;
   if (n >= 2) {
-    const double* old_wheelbases = parameters_.wheelbases_m.data();
+    const double* old_wheelbases = parameters_.chain.wheelbases_m.data();
     rate_per_meter =
-        vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / old_wheelbases[0]) *
+        vehicle_angle_gain(angles_[0], parameters_.chain.vehicle_wheelbase_m / old_wheelbases[0]) *
         front_angle_derivatives(angles_, old_wheelbases, n, 0.0).first;
   }
   apply_parameters(parameters);
@@ -124,10 +126,10 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
   if (n >= 2) {
     // delta_1' = tan(delta_2) / (lambda_2 cos delta_1) - tan(delta_1) / lambda_1, solved for
     // delta_2.
-    const double* wheelbases = parameters_.wheelbases_m.data();
+    const double* wheelbases = parameters_.chain.wheelbases_m.data();
     const double front_rate =
         rate_per_meter /
-        vehicle_angle_gain(angles_[0], parameters_.vehicle_wheelbase_m / wheelbases[0]);
+        vehicle_angle_gain(angles_[0], parameters_.chain.vehicle_wheelbase_m / wheelbases[0]);
     angles_[1] = std::atan(wheelbases[1] * std::cos(angles_[0]) *
                            (front_rate + std::tan(angles_[0]) / wheelbases[0]));
   }
@@ -136,12 +138,9 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
 
 void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   direction_ = 1.0;
-  has_previous_pose_ = false;
   previous_speed_ = -1.0;
-  disturbance_estimate_ = 0.0;
-  steady_path_m_ = 0.0;
-  command_history_count_ = 0;
-  command_history_next_ = 0;
+  disturbance_.reset();
+  delay_.reset();
   rear_hint_.reset();
   front_hint_.reset();
   lead_hint_.reset();
@@ -149,8 +148,9 @@ void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
 }
 
 double LeadWheelController::friction_guard_curvature(double speed) const noexcept {
-  const double limit = parameters_.max_lateral_acceleration_mps2;
-  if (!std::isfinite(limit) || speed <= 0.0 || parameters_.order == 0) {
+  const FrictionGuard& guard = parameters_.friction_guard;
+  const double limit = guard.max_lateral_acceleration_mps2;
+  if (!guard.enabled || speed <= 0.0 || parameters_.chain.order == 0) {
     return std::numeric_limits<double>::infinity();
   }
   return stationary_lead_curvature(limit / (speed * speed), chain_length_squared_);
@@ -164,15 +164,15 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   // The path's curvature as the rate-limited feedforward should see it (feedforward.hpp): with a
   // finite L_ff the previewed samples (a jump becomes a ramp centred on it), else the path at s
   // and +- one step. The exact rear-axle target reads it at the rear axle, a chain's reach
-  // behind the lead wheel; the others at the lead wheel. All read `dynamics_preview_m_` ahead.
-  const double rate = parameters_.feedforward_curvature_rate;
-  const CorneringTarget kind = parameters_.cornering_target;
+  // behind the lead wheel; the others at the lead wheel. All read `dynamics_.preview_m` ahead.
+  const double rate = parameters_.feedforward.curvature_rate;
+  const CorneringTarget kind = parameters_.feedforward.cornering_target;
   const bool exact = kind == CorneringTarget::rear_axle_exact;
-  const double s = lead.arc_length_m + dynamics_preview_m_ - (exact ? chain_reach_ : 0.0);
+  const double s = lead.arc_length_m + dynamics_.preview_m - (exact ? chain_reach_ : 0.0);
   const bool limited = std::isfinite(rate) && rate > 0.0;
   PreviewedCurvature curvature{lead.curvature, lead.curvature, lead.curvature};
-  const bool planned =
-      exact && limited && parameters_.curvature_preview == CurvaturePreview::planned_jumps;
+  const bool planned = exact && limited &&
+                       parameters_.feedforward.curvature_preview == CurvaturePreview::planned_jumps;
   if (planned) {
     // The jet comes from the plan's lagged response below (jump_plan.hpp).
   } else if (exact) {
@@ -185,31 +185,31 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   } else if (limited) {
     const double bound = std::max(parameters_.feedforward_curvature_bound(), 1e-12);
     curvature = preview_curvature(*path_, s, curvature_jet_step_m, rate, bound);
-  } else if (kind == CorneringTarget::rear_axle || dynamics_preview_m_ > 0.0) {
+  } else if (kind == CorneringTarget::rear_axle || dynamics_.preview_m > 0.0) {
     curvature.at = path_->evaluate(s).curvature;
     curvature.before = path_->evaluate(s - curvature_jet_step_m).curvature;
     curvature.after = path_->evaluate(s + curvature_jet_step_m).curvature;
   }
-  // The single-track inversion (ControllerParameters::preview_time_s): gain and second-order
+  // The single-track inversion (ControllerParameters::single_track): gain and second-order
   // correction on top of the preview; then, with a plant disturbance kappa_d, the chain runs on
   // kappa - kappa_d while the rear axle follows kappa (docs/feedforward.md, "disturbances on the
   // vehicle").
   CurvatureJet jet = planned ? planned_rear_curvature_jet(
                                    *path_, s, rate, parameters_.feedforward_curvature_bound(),
-                                   parameters_.wheelbases_m.data(), parameters_.order)
+                                   parameters_.chain.wheelbases_m.data(), parameters_.chain.order)
                              : curvature_jet(curvature.before, curvature.at, curvature.after);
-  jet.value = dynamics_gain_ * jet.value + dynamics_bend_m2_ * jet.bend;
-  jet.slope *= dynamics_gain_;
-  jet.bend *= dynamics_gain_;
+  jet.value = dynamics_.gain * jet.value + dynamics_.bend_m2 * jet.bend;
+  jet.slope *= dynamics_.gain;
+  jet.bend *= dynamics_.gain;
   if (kind == CorneringTarget::lead_wheel) return {0.0, 0.0, jet.value};
-  const double d = disturbance_estimate_;
+  const double d = disturbance_.estimate();
   TargetCurve target;
   if (exact) {
     // The chain's angles come from kappa - kappa_d, the lead wheel's position from the path's
     // own geometry, so its curve bends by kappa_d more than the chain's input.
     jet.value -= d;
-    target = rear_axle_target_curve(*path_, lead, jet, parameters_.wheelbases_m.data(),
-                                    parameters_.order);
+    target = rear_axle_target_curve(*path_, lead, jet, parameters_.chain.wheelbases_m.data(),
+                                    parameters_.chain.order);
   } else {
     // The chain's stationary shape on kappa - kappa_d, minus the path's extra bend over the
     // chain's reach l = sum lambda_i, kappa_d l^2 / 2.
@@ -231,10 +231,10 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
     Vec2 rear_position, double rear_travel_heading, bool refresh_target, double switching_bound,
     double boundary_layer) noexcept {
   // Lead-wheel state from projecting its own position (paper Sec. II end, paper_notes §6).
-  const int n = parameters_.order;
+  const int n = parameters_.chain.order;
   ChainGeometry geometry;
-  chain_geometry(rear_position, rear_travel_heading, angles_, parameters_.wheelbases_m.data(), n,
-                 geometry);
+  chain_geometry(rear_position, rear_travel_heading, angles_, parameters_.chain.wheelbases_m.data(),
+                 n, geometry);
   const auto lead = static_cast<std::size_t>(n);
   LeadWheelState state;
   // The target curve is refreshed once per period, which needs the arc length of the closest
@@ -249,90 +249,17 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
   // The plant adds kappa_d to every curvature of the chain: the lead wheel asks that much less.
   state.feedforward_target =
       frenet_feedforward_curvature(target_.curvature, error, state.relative_heading) -
-      disturbance_estimate_;
+      disturbance_.estimate();
   state.law = dubins_switching_law(error, state.relative_heading, switching_bound, boundary_layer,
                                    parameters_);
   return state;
 }
 
-void LeadWheelController::update_disturbance_estimate(const ControllerInput& input) noexcept {
-  const double length = parameters_.disturbance_estimation_length_m;
-  const double course = input.heading_rad + input.rear_axle_side_slip_rad;
-  if (length > 0.0 && has_previous_pose_ && command_history_count_ > 0 && direction_ > 0.0 &&
-      input.speed_mps > 0.0) {
-    const double distance = norm(input.rear_axle_position - previous_position_);
-    if (distance > 1e-6) {
-      // The steering in effect over the last period: issued `actuator_delay_s` earlier, plus
-      // the lag of the tires' slip that the single-track inversion previews (lag / g metres).
-      const double delay = parameters_.actuator_delay_s + slip_lag_m_ / input.speed_mps;
-      const auto age =
-          std::min<std::size_t>(command_history_count_ - 1,
-                                static_cast<std::size_t>(std::lround(delay / input.period_s)));
-      const double commanded =
-          std::tan(issued_command(age).steering_rad) / parameters_.vehicle_wheelbase_m;
-      // In the chain's units: the inversion steers g kappa for a course curvature kappa
-      // (understeer is the model's, not a disturbance), so the disturbance is g kappa - command.
-      const double measured = dynamics_gain_ * wrap_angle(course - previous_course_) / distance;
-      // Learn where the path has let the car settle: while the path's curvature moves, the slip
-      // and actuator transients that the model leaves read as a disturbance. The path at the
-      // rear axle counts as steady while its lateral jerk v^3 |d kappa / ds| stays below
-      // steady_lateral_jerk_mps3; the weight grows from 0 to 1 over the settling distance after.
-      const double v = input.speed_mps;
-      const double moved = std::abs(rear_path_curvature_ - previous_rear_path_curvature_);
-      if (moved > steady_lateral_jerk_mps3 / (v * v * v) * distance) {
-        steady_path_m_ = 0.0;
-      } else {
-        steady_path_m_ += distance;
-      }
-      const double settling_m = std::max(min_settling_m, settling_time_s * v);
-      const double weight = std::clamp(steady_path_m_ / settling_m - 1.0, 0.0, 1.0);
-      const double gain = weight * std::min(1.0, distance / length);
-      const double bound = parameters_.feedforward_curvature_bound();
-      disturbance_estimate_ =
-          std::clamp(disturbance_estimate_ + gain * (measured - commanded - disturbance_estimate_),
-                     -bound, bound);
-    }
-  }
-  previous_position_ = input.rear_axle_position;
-  previous_course_ = course;
-  previous_rear_path_curvature_ = rear_path_curvature_;
-  has_previous_pose_ = true;
-}
-
-Pose2 LeadWheelController::predicted_pose(const ControllerInput& input) const noexcept {
-  // The law steers the rear axle's course psi + beta_r (the kinematic model's heading).
-  Pose2 pose{input.rear_axle_position, input.heading_rad + input.rear_axle_side_slip_rad};
-  const double delay = parameters_.actuator_delay_s;
-  if (delay <= 0.0 || command_history_count_ == 0) return pose;
-  // The steering in effect during the next `delay` seconds is what was commanded during the last
-  // `delay` seconds. Find the oldest such command, then roll the kinematic model forward through
-  // them, oldest first, at the current speed.
-  const KinematicSingleTrack model{parameters_.vehicle_wheelbase_m};
-  std::size_t count = 0;
-  double covered = 0.0;
-  while (count < command_history_count_ && covered < delay)
-    covered += issued_command(count++).period_s;
-  double overshoot = covered > delay ? covered - delay : 0.0;  // part of the oldest one
-  for (std::size_t k = count; k-- > 0;) {
-    const IssuedCommand& command = issued_command(k);
-    const double duration = command.period_s - overshoot;
-    overshoot = 0.0;
-    // The car turns by the estimated plant disturbance too: tan(delta) + lambda_veh kappa_d.
-    const double steering =
-        disturbance_estimate_ == 0.0
-            ? command.steering_rad
-            : disturbed_steering_angle(command.steering_rad, parameters_.vehicle_wheelbase_m,
-                                       disturbance_estimate_);
-    pose = model.step(pose, steering, input.speed_mps, duration);
-  }
-  return pose;
-}
-
 Status LeadWheelController::compute_command(const ControllerInput& input,
                                             ControllerOutput& output) noexcept {
   if (!valid_input(input)) return Status::invalid_input;
-  const int n = parameters_.order;
-  const double* wheelbases = parameters_.wheelbases_m.data();
+  const int n = parameters_.chain.order;
+  const double* wheelbases = parameters_.chain.wheelbases_m.data();
 
   // Reversing: the chain is mirrored so that it always points along the direction of travel
   // (paper Sec. II end: lambda_i < 0 for ds/dt < 0). Switching direction re-initialises the chain
@@ -341,24 +268,27 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     direction_ = sign(input.speed_mps);
     initialise_chain(last_steering_angle_);
   }
-  // Where the feedforward reads the path (ControllerParameters::preview_time_s).
   const double speed_magnitude = std::abs(input.speed_mps);
-  {
-    const double rear = parameters_.rear_slip_gradient_s2pm;
-    const double front = parameters_.front_slip_gradient_s2pm;
-    const double v2 = speed_magnitude * speed_magnitude;
-    const double lag = (front + rear) * v2;  // L (K_f + K_r) v^2 kappa' / L
-    dynamics_gain_ = std::max(0.5, 1.0 + (front - rear) * v2 / parameters_.vehicle_wheelbase_m);
-    slip_lag_m_ = lag / dynamics_gain_;
-    dynamics_preview_m_ = parameters_.preview_time_s * speed_magnitude + slip_lag_m_;
-    // g kappa(s + d) carries lag^2 / (2 g) kappa''; the model asks K_f K_r v^4 kappa''.
-    dynamics_bend_m2_ = parameters_.slip_preview_second_order
-                            ? front * rear * v2 * v2 - 0.5 * lag * lag / dynamics_gain_
-                            : 0.0;
-  }
-  update_disturbance_estimate(input);
-  // With a known actuator delay the law acts on the pose at which this command will take effect.
-  const Pose2 law_pose = predicted_pose(input);
+  const double wheelbase = parameters_.chain.vehicle_wheelbase_m;
+  // Stage 1, the single-track inversion: where and how strongly the feedforward reads the path.
+  dynamics_.update(parameters_.single_track, speed_magnitude, wheelbase);
+  // Stage 2, the disturbance estimate, from the course turned since the last period.
+  const DisturbanceEstimator::Context estimation{
+      .enabled = parameters_.disturbance_estimation.enabled,
+      .length_m = parameters_.disturbance_estimation.length_m,
+      .direction = direction_,
+      .delay_s = compensated_delay_s(),
+      .slip_lag_m = dynamics_.slip_lag_m,
+      .dynamics_gain = dynamics_.gain,
+      .wheelbase_m = wheelbase,
+      .feedforward_bound = parameters_.feedforward_curvature_bound()};
+  disturbance_.update(input, estimation, delay_);
+  // Stage 3, the delay prediction: with a known actuator delay the law acts on the pose at which
+  // this command will take effect. The law steers the rear axle's course psi + beta_r (the
+  // kinematic model's heading).
+  const Pose2 law_pose =
+      delay_.predict({input.rear_axle_position, input.heading_rad + input.rear_axle_side_slip_rad},
+                     compensated_delay_s(), input.speed_mps, wheelbase, disturbance_.estimate());
 
   // One control period: the switching law is re-evaluated at every RK4 sub-step of the chain.
   // The first sub-step uses law_pose (measured, or predicted over the actuator delay); later ones
@@ -369,7 +299,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   int steps = 1;
   if (n > 0 && distance > 0.0) {
     steps = std::clamp(static_cast<int>(std::ceil(distance / largest_substep_m_)), 1,
-                       parameters_.max_substeps);
+                       parameters_.chain.max_substeps);
   }
   const double step_length = distance / steps;
   Vec2 position = law_pose.position;
@@ -381,7 +311,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   const double feedforward_bound = std::min(parameters_.feedforward_curvature_bound(), guard);
   const double switching_bound = parameters_.switching_curvature_bound();
   const double feedforward_step =
-      step_length > 0.0 ? parameters_.feedforward_curvature_rate * step_length : 0.0;
+      step_length > 0.0 ? parameters_.feedforward.curvature_rate * step_length : 0.0;
   // The governor (steering_governor.hpp) holds the car's limits itself, so the split follows the
   // feedforward along s: the switching part gets what kappa_ff leaves of kbar_n, and with
   // law_length_m its boundary layer scales with it (epsilon = l kbar_sw / 2), which keeps the
@@ -413,18 +343,18 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     if (governed) {
       feedforward_envelope_ =
           std::max(std::abs(feedforward_curvature_),
-                   feedforward_envelope_ - parameters_.lead_curvature_bound * step_length /
+                   feedforward_envelope_ - parameters_.chain.lead_curvature_bound * step_length /
                                                SteeringGovernor::demand_memory_m);
     }
     const double law_bound =
-        governed ? std::max(std::min(parameters_.lead_curvature_bound - feedforward_envelope_,
+        governed ? std::max(std::min(parameters_.chain.lead_curvature_bound - feedforward_envelope_,
                                      far_law_reversal_bound),
                             near_bound)
                  : switching_bound;
     const double law_layer = governed && governor.law_length_m > 0.0
                                  ? 0.5 * governor.law_length_m * law_bound
-                                 : parameters_.boundary_layer;
-    const double catch_up = parameters_.feedforward_catch_up * law_bound;
+                                 : parameters_.law.boundary_layer;
+    const double catch_up = parameters_.feedforward.catch_up * law_bound;
     LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0, law_bound, law_layer);
     if (governed) {
       // Near the path the certified law steers (its authority and boundary layer, as the split
@@ -432,7 +362,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       // variable leaves its boundary layer, fully at twice its width, and keeps the lead until
       // the error is gone: its share decays over SteeringGovernor::far_law_memory_m, so that the
       // slow near-path surface does not finish an engagement (docs/governor.md).
-      const double layer = parameters_.boundary_layer;
+      const double layer = parameters_.law.boundary_layer;
       const SwitchingResult near = dubins_switching_law(lead.lateral_error, lead.relative_heading,
                                                         near_bound, layer, parameters_);
       const double wanted =
@@ -441,29 +371,14 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       lead.law.curvature = far_share_ * lead.law.curvature + (1.0 - far_share_) * near.curvature;
     }
     if (step == 0) first = lead;
-    // kappa_ff moves towards its target by at most L_ff per metre, linearly within the sub-step,
-    // and stays within +-kbar_ff (the split the certificate assumes).
+    // Stage 4, the split: kappa_ff moves towards its target at L_ff, linearly within the
+    // sub-step; kappa_sw is the law with the catch-up and the friction guard.
     const double feedforward_start = feedforward_curvature_;
-    const double wanted =
-        std::clamp(lead.feedforward_target, -feedforward_bound, feedforward_bound);
-    feedforward_curvature_ +=
-        std::clamp(wanted - feedforward_curvature_, -feedforward_step, feedforward_step);
-    // Catch-up (ControllerParameters::feedforward_catch_up): up to g kbar_sw of what the rate
-    // limit still holds kappa_ff back from its target, faded out as the law saturates, so that
-    // |kappa_sw| <= kbar_sw and a saturated law keeps its full authority.
-    const double law = lead.law.curvature;
-    const double fade = law_bound > 0.0 ? 1.0 - std::min(1.0, std::abs(law) / law_bound) : 0.0;
-    double switching = law +
-                       fade * std::clamp(wanted - feedforward_curvature_, -catch_up, catch_up) +
-                       matched_disturbance_;
-    if (guard < parameters_.lead_curvature_bound) {
-      // |kappa_ff + kappa_sw| <= guard where kappa_sw can reach it; while kappa_ff still ramps
-      // down into the guard, kappa_sw pulls with its full authority.
-      const double low = std::max(-guard - feedforward_curvature_, -law_bound);
-      const double high = std::min(guard - feedforward_curvature_, law_bound);
-      switching = low <= high ? std::clamp(switching, low, high)
-                              : (feedforward_curvature_ > 0.0 ? -law_bound : law_bound);
-    }
+    const double wanted = step_feedforward(feedforward_curvature_, lead.feedforward_target,
+                                           feedforward_bound, feedforward_step);
+    const double switching =
+        switching_curvature(lead.law.curvature, law_bound, wanted, feedforward_curvature_, catch_up,
+                            matched_disturbance_, guard, parameters_.chain.lead_curvature_bound);
     applied_curvature = feedforward_curvature_ + switching;
     if (n == 0 || step_length <= 0.0) break;
     double start_curvature = feedforward_start + switching;
@@ -472,7 +387,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       // angle limit is the car's too). kappa_n is held over the sub-step, as the interval assumes.
       const CurvatureInterval allowed =
           governed_lead_curvature_interval(angles_, parameters_, direction_, governor_step);
-      const double bound = parameters_.lead_curvature_bound;
+      const double bound = parameters_.chain.lead_curvature_bound;
       const double low = std::max(allowed.low, -bound);
       const double high = std::min(allowed.high, bound);
       applied_curvature = low <= high ? std::clamp(applied_curvature, low, high)
@@ -493,7 +408,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     // Rear-axle prediction along an arc of the mean chain curvature over the sub-step, plus the
     // plant's estimated disturbance.
     const double curvature = 0.5 * (std::tan(front_before) + std::tan(angles_[0])) / wheelbases[0] +
-                             disturbance_estimate_;
+                             disturbance_.estimate();
     const double half_turn = 0.5 * curvature * step_length;
     position = position + step_length * unit_from_heading(heading + half_turn);
     heading += 2.0 * half_turn;
@@ -505,7 +420,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   double steering = 0.0, rate = 0.0, acceleration = 0.0;
   int derivatives = 0;
   if (n == 0) {
-    steering = direction_ * std::atan(parameters_.vehicle_wheelbase_m * applied_curvature);
+    steering = direction_ * std::atan(parameters_.chain.vehicle_wheelbase_m * applied_curvature);
   } else {
     const CommandDerivatives d =
         steering_derivatives(angles_, parameters_, direction_, speed_magnitude,
@@ -520,36 +435,24 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     return Status::numerical_error;
   }
   last_steering_angle_ = steering;
-  command_history_[command_history_next_] = {steering, input.period_s};
-  command_history_next_ = (command_history_next_ + 1) % command_history_size;
-  command_history_count_ = std::min(command_history_count_ + 1, command_history_size);
+  delay_.record(steering, input.period_s);
 
   // Diagnostics of the real axles.
   const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
-  rear_path_curvature_ = rear_projection.curvature;
-  const Vec2 front_axle = input.rear_axle_position +
-                          parameters_.vehicle_wheelbase_m * unit_from_heading(input.heading_rad);
+  disturbance_.set_rear_path_curvature(rear_projection.curvature);
+  const Vec2 front_axle = input.rear_axle_position + parameters_.chain.vehicle_wheelbase_m *
+                                                         unit_from_heading(input.heading_rad);
   const PathProjection front_projection = path_->project(front_axle, front_hint_);
 
-  // Actuator inversion (ControllerParameters::actuator_time_constant_s): the command leads the
-  // chain's delta_veh, which the actuator then reproduces. The history and the re-initialisation
-  // keep the chain's own delta_veh: that is what the actuator delivers.
-  const double lag = parameters_.actuator_time_constant_s;
-  if (lag > 0.0 && n >= 2) {
-    const double count = parameters_.actuator_lag_count;
-    const double a1 = count * lag;                              // a1 = m T
-    const double a2 = 0.5 * count * (count - 1.0) * lag * lag;  // a2 = C(m, 2) T^2
-    if (n == 2) {  // derivatives up to n - 1 = 1: the command's rate delta' + a1 delta''
-      steering += a1 * rate;
-      rate += a1 * acceleration;
-      acceleration = 0.0;
-      derivatives = 1;
-    } else {
-      steering += a1 * rate + a2 * acceleration;
-      rate = acceleration = 0.0;
-      derivatives = 0;
-    }
-  }
+  // Stage 5, the actuator inversion: the command leads the chain's delta_veh, which the
+  // actuator then reproduces. The history and the re-initialisation keep the chain's own
+  // delta_veh: that is what the actuator delivers.
+  SteeringCommand command{steering, rate, acceleration, derivatives};
+  invert_actuator(parameters_.actuator_inversion, n, command);
+  steering = command.steering_rad;
+  rate = command.rate_radps;
+  acceleration = command.acceleration_radps2;
+  derivatives = command.derivatives;
   output.steering_angle_rad = steering;
   output.steering_rate_radps = rate;
   output.steering_acceleration_radps2 = acceleration;

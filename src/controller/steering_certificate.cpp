@@ -45,10 +45,10 @@ SteeringCertificate feedforward_certificate(const ControllerParameters& paramete
                                             const ChainBounds& bounds) noexcept {
   SteeringCertificate certificate;
   certificate.steering_angle_rad = bounds.steering_angle_rad;
-  const int n = parameters.order;
-  const double feedforward_rate = parameters.feedforward_curvature_rate;
+  const int n = parameters.chain.order;
+  const double feedforward_rate = parameters.feedforward.curvature_rate;
   if (n == 0 || !std::isfinite(feedforward_rate)) return certificate;
-  const double* lambda = parameters.wheelbases_m.data();
+  const double* lambda = parameters.chain.wheelbases_m.data();
 
   // Input of stage i (kappa_i): its feedforward part changes by at most `rate` per metre of s,
   // its switching part stays within `magnitude`. Stage i's output sigma_{i-1} obeys the same
@@ -69,8 +69,8 @@ SteeringCertificate feedforward_certificate(const ControllerParameters& paramete
   }
   // Stage 1 runs in s itself: |sigma_0'| <= rate + 2 magnitude / lambda_1.
   const double sigma_rate = rate + 2.0 * magnitude / lambda[0];
-  const OutputSlopes out =
-      output_slope_bounds(parameters.vehicle_wheelbase_m, lambda[0], std::sin(bounds.angle[0]));
+  const OutputSlopes out = output_slope_bounds(parameters.chain.vehicle_wheelbase_m, lambda[0],
+                                               std::sin(bounds.angle[0]));
   certificate.rate_per_meter = out.first * sigma_rate;
   if (n >= 2) {
     // sigma_0'' = (kappa_1' - sigma_0') / lambda_1 and kappa_1' = N'(sigma_1) sec(delta_1)

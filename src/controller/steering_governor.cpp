@@ -14,10 +14,10 @@ CommandDerivatives steering_derivatives(const ChainAngles& angles,
                                         double speed_magnitude, double acceleration_mps2,
                                         double lead_curvature) noexcept {
   CommandDerivatives result;
-  const int n = parameters.order;
+  const int n = parameters.chain.order;
   if (n == 0) return result;
-  const double* wheelbases = parameters.wheelbases_m.data();
-  const double ratio = parameters.vehicle_wheelbase_m / wheelbases[0];
+  const double* wheelbases = parameters.chain.wheelbases_m.data();
+  const double ratio = parameters.chain.vehicle_wheelbase_m / wheelbases[0];
   const double front = angles[0];
   const double gain = vehicle_angle_gain(front, ratio);  // d delta_veh / d delta_1
   const FrontAngleDerivatives d = front_angle_derivatives(angles, wheelbases, n, lead_curvature);
@@ -64,7 +64,7 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
   // The command as a function of kappa_n at this state: two evaluations of an affine map.
   const CommandDerivatives zero = steering_derivatives(angles, parameters, direction, v, 0.0, 0.0);
   const CommandDerivatives one = steering_derivatives(angles, parameters, direction, v, 0.0, 1.0);
-  if (parameters.order == 1) {
+  if (parameters.chain.order == 1) {
     // rate(kappa) = zero.rate + (one.rate - zero.rate) kappa; its change from the last sub-step
     // is bounded by (A - |dv/dt| |rate| / v) h.
     // Within the sub-step the rate drifts at held kappa_n as delta_1 moves:
@@ -72,13 +72,13 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
     // bounded with |kappa_n| <= kbar_n; that drift is budgeted like the speed change.
     const double previous = step.previous_rate_radps;
     const double front = angles[0];
-    const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
+    const double ratio = parameters.chain.vehicle_wheelbase_m / parameters.chain.wheelbases_m[0];
     const double gain = vehicle_angle_gain(front, ratio);
     const double front_rate = std::abs(previous) / (v * gain);  // |delta_1'| [rad/m]
     const double cosine = std::cos(front);
     const double drift = v * (std::abs(vehicle_angle_gain_slope(front, ratio)) / gain * front_rate +
-                              (parameters.lead_curvature_bound * std::abs(std::sin(front)) +
-                               1.0 / parameters.wheelbases_m[0]) /
+                              (parameters.chain.lead_curvature_bound * std::abs(std::sin(front)) +
+                               1.0 / parameters.chain.wheelbases_m[0]) /
                                   (cosine * cosine));
     const double reserve = (step.longitudinal_acceleration / v + drift) * std::abs(previous);
     const double change = std::max(0.0, acceleration_limit - reserve) * h;
@@ -109,10 +109,10 @@ double governed_law_length(const ControllerParameters& parameters, double speed_
   // to turn 0.1 rad of heading.
   constexpr double c = 0.7;
   const double v = std::abs(speed_mps);
-  const double reach = chain_reach(parameters.wheelbases_m.data(), parameters.order);
+  const double reach = chain_reach(parameters.chain.wheelbases_m.data(), parameters.chain.order);
   const double rate = parameters.governor.max_steering_rate_radps;
   const double rate_bound = std::isfinite(rate) && rate > 0.0
-                                ? c * std::sqrt(v * parameters.vehicle_wheelbase_m / rate)
+                                ? c * std::sqrt(v * parameters.chain.vehicle_wheelbase_m / rate)
                                 : 0.0;
   return std::max({reach, 1.0 + 0.25 * v, rate_bound});
 }
@@ -127,26 +127,26 @@ double governed_reversal_curvature(const ControllerParameters& parameters,
   // n = 1 reverses within half the law's length: its command follows kappa_n within a sub-step,
   // and at the full length a random closed loop (v = 18.7 m/s, R = 1.5 rad/s) kept a 0.29 m limit
   // cycle. n = 2 uses the whole length: its chain filters kappa_n once more.
-  const double travel = parameters.order == 1 ? 0.5 * length : length;
-  return travel * rate / (2.0 * parameters.vehicle_wheelbase_m * v);
+  const double travel = parameters.chain.order == 1 ? 0.5 * length : length;
+  return travel * rate / (2.0 * parameters.chain.vehicle_wheelbase_m * v);
 }
 
 ControllerParameters governed_parameters(const ControllerParameters& certified,
                                          double speed_mps) noexcept {
   const SteeringGovernor& governor = certified.governor;
-  if (!governor.enabled || certified.order < 1) return certified;
+  if (!governor.enabled || certified.chain.order < 1) return certified;
   const double v = std::abs(speed_mps);
   double chain_length_squared = 0.0;
-  for (int i = 0; i < certified.order; ++i) {
-    const double lambda = certified.wheelbases_m[static_cast<std::size_t>(i)];
+  for (int i = 0; i < certified.chain.order; ++i) {
+    const double lambda = certified.chain.wheelbases_m[static_cast<std::size_t>(i)];
     chain_length_squared += lambda * lambda;
   }
   // Eq. (kappalmax) corrected (docs/tuning.md): kbar_n <= sin(dbar_veh) / lambda_veh; friction:
   // the rear axle's kbar_0 <= mu g / v^2, mapped to the lead wheel by stationary cornering.
   double bound = unbounded;
   if (std::isfinite(governor.max_steering_angle_rad)) {
-    bound =
-        std::sin(std::min(governor.max_steering_angle_rad, 1.5)) / certified.vehicle_wheelbase_m;
+    bound = std::sin(std::min(governor.max_steering_angle_rad, 1.5)) /
+            certified.chain.vehicle_wheelbase_m;
   }
   if (std::isfinite(governor.max_lateral_acceleration_mps2) && v > 0.0) {
     bound =
@@ -157,11 +157,11 @@ ControllerParameters governed_parameters(const ControllerParameters& certified,
   if (p.governor.certified_switching_bound <= 0.0) {
     p.governor.certified_switching_bound = certified.switching_curvature_bound();
   }
-  if (std::isfinite(bound) && bound > certified.lead_curvature_bound) {
+  if (std::isfinite(bound) && bound > certified.chain.lead_curvature_bound) {
     const double feedforward =
         std::max(certified.feedforward_curvature_bound(), governed_feedforward_share * bound);
-    p.lead_curvature_bound = bound;
-    p.feedforward_share = std::min(feedforward / bound, 0.95);
+    p.chain.lead_curvature_bound = bound;
+    p.feedforward.share = std::min(feedforward / bound, 0.95);
   }
   if (p.governor.law_length_m <= 0.0) p.governor.law_length_m = governed_law_length(p, v);
   return p.is_valid() ? p : certified;

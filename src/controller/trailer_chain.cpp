@@ -28,23 +28,23 @@ double worst_front_rate(double front_angle, double kbar_1, double lambda_1) noex
 
 ChainBounds compute_invariant_sets(const ControllerParameters& parameters) noexcept {
   ChainBounds bounds;
-  const int n = parameters.order;
-  bounds.curvature[static_cast<std::size_t>(n)] = parameters.lead_curvature_bound;
+  const int n = parameters.chain.order;
+  bounds.curvature[static_cast<std::size_t>(n)] = parameters.chain.lead_curvature_bound;
   for (int i = n; i >= 1; --i) {
     const auto index = static_cast<std::size_t>(i);
     const double kbar = bounds.curvature[index];
-    const double lambda = parameters.wheelbases_m[index - 1];
+    const double lambda = parameters.chain.wheelbases_m[index - 1];
     const double product = kbar * lambda;
     bounds.angle[index - 1] = std::asin(product);                             // eq. (kappaf_constr)
     bounds.curvature[index - 1] = kbar / std::sqrt(1.0 - product * product);  // paper_notes §2
   }
-  bounds.steering_angle_rad = std::atan(parameters.vehicle_wheelbase_m * bounds.curvature[0]);
+  bounds.steering_angle_rad = std::atan(parameters.chain.vehicle_wheelbase_m * bounds.curvature[0]);
   return bounds;
 }
 
 ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
   ChainBounds bounds = compute_invariant_sets(parameters);
-  const int n = parameters.order;
+  const int n = parameters.chain.order;
   if (n == 0) {
     bounds.steering_rate_per_meter = std::numeric_limits<double>::infinity();
     return bounds;
@@ -54,9 +54,9 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
   // increasing, convex rate has at most one interior maximum, so 64 samples bracket it;
   // ChainBounds.RateBoundEqualsBruteForce compares with 200 000 samples. Cheap enough for
   // LeadWheelController::retune() in the control loop (~2 us).
-  const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
+  const double ratio = parameters.chain.vehicle_wheelbase_m / parameters.chain.wheelbases_m[0];
   const double kbar_1 = bounds.curvature[1];
-  const double lambda_1 = parameters.wheelbases_m[0];
+  const double lambda_1 = parameters.chain.wheelbases_m[0];
   const double limit = bounds.angle[0];
   auto rate = [&](double angle) {
     return vehicle_angle_gain(angle, ratio) * worst_front_rate(angle, kbar_1, lambda_1);

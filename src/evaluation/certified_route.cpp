@@ -85,7 +85,7 @@ TuningOptions certified_route_options(const runner::Scenario& scenario,
     } else if (key == "feedforward_rate_margin") {
       options.feedforward_rate_margin = value;
     } else if (key == "boundary_layer") {
-      options.base.boundary_layer = value;
+      options.base.law.boundary_layer = value;
     } else {
       throw std::invalid_argument("certified_route_options: '" + key +
                                   "' is not a knob of the certified route (docs/baselines.md)");

@@ -6,11 +6,15 @@
 #include <mutex>
 #include <numbers>
 #include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <filesystem>
 #include <stdexcept>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/parameter_fields.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
@@ -28,67 +32,61 @@ namespace {
 //! eq. (cornering_constr).
 //! Keys shared by the fixed and the scheduled lead-wheel controller.
 void read_law_options(ConfigSection& c, ControllerParameters& p, const VehicleParameters& vehicle) {
-  // Defaults come from the C++ struct: a scenario key and its field cannot disagree.
+  // Defaults come from the C++ struct: a scenario key and its field cannot disagree. The direct
+  // keys are the field table's (parameter_fields.hpp), each read as its row says; the chain's
+  // order, bound and wheelbases are make_lead_wheel's (a schedule gives them otherwise), the
+  // slip gradients, the friction guard and the governor follow from the vehicle file below.
   const ControllerParameters defaults;
-  p.k_rob = c.number("k_rob", defaults.k_rob, {0.0, 1.0, false, true});
-  p.boundary_layer = c.number("boundary_layer", defaults.boundary_layer, Range::non_negative());
-  p.feedforward_share =
-      c.number("feedforward_share", defaults.feedforward_share, {0.0, 1.0, false, true});
-  // Absent: the C++ default, no rate limit (+inf, null in the resolved parameters).
-  if (c.has("feedforward_curvature_rate")) {
-    p.feedforward_curvature_rate =
-        c.required_number("feedforward_curvature_rate", Range::non_negative());
-  } else {
-    p.feedforward_curvature_rate = defaults.feedforward_curvature_rate;
-    c.store("feedforward_curvature_rate", YAML::Node(YAML::NodeType::Null));
+  for (const ParameterField& field : controller_parameter_fields()) {
+    if (field.scenario != ScenarioKey::direct || field.group == ParameterGroup::governor ||
+        field.kind == FieldKind::wheelbases || field.member == "chain.order" ||
+        field.member == "chain.lead_curvature_bound") {
+      continue;
+    }
+    const std::string key(field.name);
+    const double fallback = field.get(defaults);
+    const FieldRange r = field.range.hull();
+    switch (field.kind) {
+      case FieldKind::integer:
+        field.set(p, c.integer(key, static_cast<int>(fallback), static_cast<int>(r.min),
+                               static_cast<int>(r.max)));
+        break;
+      case FieldKind::boolean:
+        field.set(p, c.boolean(key, fallback != 0.0) ? 1.0 : 0.0);
+        break;
+      case FieldKind::choice: {
+        std::vector<std::string> names;
+        std::istringstream words{std::string(field.choices)};
+        for (std::string word; words >> word;) names.push_back(word);
+        const std::string chosen = c.text(key, names[static_cast<std::size_t>(fallback)], names);
+        for (std::size_t k = 0; k < names.size(); ++k) {
+          if (names[k] == chosen) field.set(p, static_cast<double>(k));
+        }
+        break;
+      }
+      default:
+        if (std::isinf(fallback) && !c.has(key)) {
+          // Absent: the C++ default, +inf (null in the resolved parameters).
+          field.set(p, fallback);
+          c.store(key, YAML::Node(YAML::NodeType::Null));
+        } else {
+          field.set(p, c.number(key, fallback, {r.min, r.max, r.min_open, r.max_open}));
+        }
+    }
   }
-  p.feedforward_catch_up =
-      c.number("feedforward_catch_up", defaults.feedforward_catch_up, {0.0, 1.0});
-  p.actuator_delay_s = c.number("actuator_delay_s", defaults.actuator_delay_s,
-                                {0.0, ControllerParameters::max_actuator_delay_s});
-  p.disturbance_estimation_length_m = c.number(
-      "disturbance_estimation_length_m", defaults.disturbance_estimation_length_m, {0.0, 1000.0});
-  p.preview_time_s = c.number("preview_time_s", defaults.preview_time_s,
-                              {0.0, ControllerParameters::max_actuator_delay_s});
   // slip_preview: the feedforward inverts the single-track model's lateral dynamics, with K_r
   // and K_f from the vehicle file.
-  const bool slip_preview = c.boolean("slip_preview", defaults.rear_slip_gradient_s2pm > 0.0);
+  const bool slip_preview = c.boolean("slip_preview", defaults.single_track.enabled);
   const double most = ControllerParameters::max_slip_gradient_s2pm;
-  p.rear_slip_gradient_s2pm = slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0;
-  p.front_slip_gradient_s2pm = slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0;
-  p.slip_preview_second_order =
-      c.boolean("slip_preview_second_order", defaults.slip_preview_second_order);
+  find_parameter_field("rear_slip_gradient_s2pm")
+      ->set(p, slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0);
+  find_parameter_field("front_slip_gradient_s2pm")
+      ->set(p, slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0);
   // friction_guard: never ask more than the tires' mu g (vehicle file) of lateral acceleration.
-  p.max_lateral_acceleration_mps2 =
-      c.boolean("friction_guard", std::isfinite(defaults.max_lateral_acceleration_mps2))
-          ? vehicle.friction_limit_mps2()
-          : std::numeric_limits<double>::infinity();
-  p.actuator_time_constant_s =
-      c.number("actuator_time_constant_s", defaults.actuator_time_constant_s, {0.0, 0.5});
-  p.actuator_lag_count = c.integer("actuator_lag_count", defaults.actuator_lag_count, 1, 3);
-  p.approach_angle_rad = c.number("approach_angle_rad", defaults.approach_angle_rad,
-                                  {0.0, std::numbers::pi / 2.0, true, false});
-  const bool paper_surface = defaults.surface == SlidingSurface::paper;
-  const std::string surface =
-      c.text("surface", paper_surface ? "paper" : "global", {"global", "paper"});
-  p.surface = surface == "paper" ? SlidingSurface::paper : SlidingSurface::global;
-  const char* names[] = {"rear_axle", "rear_axle_exact", "lead_wheel"};
-  const CorneringTarget kinds[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
-                                   CorneringTarget::lead_wheel};
-  std::string fallback = names[0];
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (kinds[k] == defaults.cornering_target) fallback = names[k];
-  }
-  const std::string target =
-      c.text("cornering_target", fallback, {"lead_wheel", "rear_axle", "rear_axle_exact"});
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (target == names[k]) p.cornering_target = kinds[k];
-  }
-  const bool planned = defaults.curvature_preview == CurvaturePreview::planned_jumps;
-  p.curvature_preview = c.text("curvature_preview", planned ? "planned_jumps" : "centred_ramp",
-                               {"centred_ramp", "planned_jumps"}) == "planned_jumps"
-                            ? CurvaturePreview::planned_jumps
-                            : CurvaturePreview::centred_ramp;
+  find_parameter_field("max_lateral_acceleration_mps2")
+      ->set(p, c.boolean("friction_guard", defaults.friction_guard.enabled)
+                   ? vehicle.friction_limit_mps2()
+                   : std::numeric_limits<double>::infinity());
   // The steering governor (docs/governor.md) holds the vehicle file's rate and acceleration
   // limits on the held command and draws its authority from its angle and friction limits.
   ConfigSection governor = c.section("governor");
@@ -110,9 +108,6 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
   }
   governor.finish();
   c.store("governor", governor.resolved());
-  p.max_substep_fraction =
-      c.number("max_substep_fraction", defaults.max_substep_fraction, {0.0, 1.0, true, false});
-  p.max_substeps = c.integer("max_substeps", defaults.max_substeps, 1, 10000);
 }
 
 std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
@@ -120,32 +115,34 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
                                                     const VehicleParameters& vehicle) {
   ControllerParameters p;
   const double wheelbase = vehicle.wheelbase_m();
-  p.vehicle_wheelbase_m = wheelbase;
+  p.chain.vehicle_wheelbase_m = wheelbase;
   const ControllerParameters defaults;
-  p.order = c.integer("order", defaults.order, 0, ControllerParameters::max_order);
-  p.lead_curvature_bound =
-      c.number("lead_curvature_bound", defaults.lead_curvature_bound, Range::positive());
+  p.chain.order = c.integer("order", defaults.chain.order, 0, ControllerParameters::max_order);
+  p.chain.lead_curvature_bound =
+      c.number("lead_curvature_bound", defaults.chain.lead_curvature_bound, Range::positive());
   read_law_options(c, p, vehicle);
   // Wheelbases: explicit list, or the paper's choice: n = 1 -> lambda = lambda_veh (eq. ext1);
   // n = 2 -> lambda = sqrt(lambda_veh^2 - lambda_l^2) (eq. cornering_constr).
   if (c.has("wheelbases_m")) {
-    const auto list = c.numbers("wheelbases_m", {}, static_cast<std::size_t>(std::max(p.order, 1)),
-                                static_cast<std::size_t>(std::max(p.order, 1)), Range::positive());
-    for (std::size_t i = 0; i < list.size(); ++i) p.wheelbases_m[i] = list[i];
+    const auto list =
+        c.numbers("wheelbases_m", {}, static_cast<std::size_t>(std::max(p.chain.order, 1)),
+                  static_cast<std::size_t>(std::max(p.chain.order, 1)), Range::positive());
+    for (std::size_t i = 0; i < list.size(); ++i) p.chain.wheelbases_m[i] = list[i];
     if (c.has("lead_wheelbase_m"))
       c.fail("lead_wheelbase_m", "give either wheelbases_m or lead_wheelbase_m");
   } else {
     const double lead = c.number("lead_wheelbase_m", 1.0, {0.0, wheelbase, true, true});
-    if (p.order == 2) {
-      p.wheelbases_m[0] = cornering_front_wheelbase(wheelbase, lead * lead);
-      p.wheelbases_m[1] = lead;
-    } else if (p.order == 1) {
-      p.wheelbases_m[0] = wheelbase;
-    } else if (p.order > 2) {
-      c.fail("wheelbases_m", "is required for order " + std::to_string(p.order));
+    if (p.chain.order == 2) {
+      p.chain.wheelbases_m[0] = cornering_front_wheelbase(wheelbase, lead * lead);
+      p.chain.wheelbases_m[1] = lead;
+    } else if (p.chain.order == 1) {
+      p.chain.wheelbases_m[0] = wheelbase;
+    } else if (p.chain.order > 2) {
+      c.fail("wheelbases_m", "is required for order " + std::to_string(p.chain.order));
     }
     YAML::Node list(YAML::NodeType::Sequence);
-    for (int i = 0; i < p.order; ++i) list.push_back(p.wheelbases_m[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < p.chain.order; ++i)
+      list.push_back(p.chain.wheelbases_m[static_cast<std::size_t>(i)]);
     c.store("wheelbases_m", list);
   }
   if (const std::string error = p.validation_error(); !error.empty()) {
@@ -160,7 +157,7 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
                                                               std::shared_ptr<const Path> path,
                                                               const VehicleParameters& vehicle) {
   ControllerParameters base;
-  base.vehicle_wheelbase_m = vehicle.wheelbase_m();
+  base.chain.vehicle_wheelbase_m = vehicle.wheelbase_m();
   // The Smith predictor's delay and the catch-up over speed from the car (speed_compensation.hpp)
   // or, without it, the keys actuator_delay_s and feedforward_catch_up as set.
   const bool derived = c.boolean("derived_compensation", false);

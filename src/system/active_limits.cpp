@@ -27,21 +27,23 @@ std::uint32_t active_limits(const LeadWheelController& controller, const Control
   const double lead = output.diagnostics.lead_curvature;
   const double feedforward = output.diagnostics.feedforward_curvature;
   std::uint32_t limits = limit_none;
-  if (at_bound(lead, p.lead_curvature_bound)) limits |= limit_lead_curvature;
-  if (p.feedforward_share > 0.0 && at_bound(feedforward, p.feedforward_curvature_bound())) {
+  if (at_bound(lead, p.chain.lead_curvature_bound)) limits |= limit_lead_curvature;
+  if (p.feedforward.share > 0.0 && at_bound(feedforward, p.feedforward_curvature_bound())) {
     limits |= limit_feedforward_bound;
   }
-  if (p.order > 0 && std::isfinite(p.max_lateral_acceleration_mps2) && speed_mps > 0.0) {
+  if (p.chain.order > 0 && p.friction_guard.enabled && speed_mps > 0.0) {
     // The guard's lead curvature (ControllerParameters::max_lateral_acceleration_mps2): the one
     // whose stationary rear-axle curvature is a_max / v^2.
     double chain_length_squared = 0.0;
-    for (int i = 0; i < p.order; ++i) {
-      const double lambda = p.wheelbases_m[static_cast<std::size_t>(i)];
+    for (int i = 0; i < p.chain.order; ++i) {
+      const double lambda = p.chain.wheelbases_m[static_cast<std::size_t>(i)];
       chain_length_squared += lambda * lambda;
     }
     const double guard = stationary_lead_curvature(
-        p.max_lateral_acceleration_mps2 / (speed_mps * speed_mps), chain_length_squared);
-    if (guard < p.lead_curvature_bound && (at_bound(lead, guard) || at_bound(feedforward, guard))) {
+        p.friction_guard.max_lateral_acceleration_mps2 / (speed_mps * speed_mps),
+        chain_length_squared);
+    if (guard < p.chain.lead_curvature_bound &&
+        (at_bound(lead, guard) || at_bound(feedforward, guard))) {
       limits |= limit_friction_guard;
     }
   }
@@ -49,7 +51,7 @@ std::uint32_t active_limits(const LeadWheelController& controller, const Control
       at_bound(lead - feedforward, p.switching_curvature_bound())) {
     limits |= limit_switching_bound;
   }
-  if (p.order > 0 && at_bound(controller.chain_angles()[0], controller.bounds().angle[0])) {
+  if (p.chain.order > 0 && at_bound(controller.chain_angles()[0], controller.bounds().angle[0])) {
     limits |= limit_steering_angle;
   }
   return limits;

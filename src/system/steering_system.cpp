@@ -20,10 +20,10 @@ std::unique_ptr<SteeringController> lead_wheel_for(const VehicleParameters& vehi
                                                    std::shared_ptr<const Path> path) {
   vehicle.validate();
   const double wheelbase = vehicle.wheelbase_m();
-  if (!(std::abs(controller.vehicle_wheelbase_m - wheelbase) <= 1e-9 * wheelbase)) {
-    throw std::invalid_argument(describe(
-        Violation{"ControllerParameters", "", "vehicle_wheelbase_m", controller.vehicle_wheelbase_m,
-                  "must be the vehicle's wheelbase lf + lr =", wheelbase}));
+  if (!(std::abs(controller.chain.vehicle_wheelbase_m - wheelbase) <= 1e-9 * wheelbase)) {
+    throw std::invalid_argument(describe(Violation{
+        "ControllerParameters", "", "vehicle_wheelbase_m", controller.chain.vehicle_wheelbase_m,
+        "must be the vehicle's wheelbase lf + lr =", wheelbase}));
   }
   if (!path) throw std::invalid_argument("SteeringSystem: path is null; a path is required");
   return std::make_unique<LeadWheelController>(controller, std::move(path));

@@ -48,7 +48,7 @@ struct SpeedProblem {
     const ControllerParameters p = schedule_entry_parameters(options, vehicle.wheelbase_m, e);
     if (!p.is_valid()) return false;
     const SteeringCertificate c = feedforward_certificate(p);
-    e.fictive_wheelbase_m = p.wheelbases_m[0];
+    e.fictive_wheelbase_m = p.chain.wheelbases_m[0];
     e.max_steering_angle_rad = c.steering_angle_rad;
     e.max_steering_rate_radps = c.rate_radps(speed);
     e.max_steering_acceleration_radps2 =
@@ -181,9 +181,10 @@ GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
       probe.lead_curvature_bound = 1e-3;
       probe.k_rob = options.k_rob_floor;
       const ControllerParameters p = schedule_entry_parameters(options, vehicle.wheelbase_m, probe);
-      rate_demands[static_cast<std::size_t>(i - 1)] = std::max(
-          options.path_curvature_rate_bound,
-          lead_curvature_rate_demand(*options.reference_path, p.wheelbases_m.data(), p.order));
+      rate_demands[static_cast<std::size_t>(i - 1)] =
+          std::max(options.path_curvature_rate_bound,
+                   lead_curvature_rate_demand(*options.reference_path, p.chain.wheelbases_m.data(),
+                                              p.chain.order));
     }
   }
   std::vector<ScheduleEntry> entries;

@@ -38,11 +38,11 @@ ControllerParameters parameters_for(const TuningOptions& options, double vehicle
                                     double lead_wheelbase, double kbar, double k_rob) noexcept {
   if (options.order == 1) {
     ControllerParameters p = options.base;
-    p.order = 1;
-    p.vehicle_wheelbase_m = vehicle_wheelbase;
-    p.wheelbases_m[0] = vehicle_wheelbase;
-    p.lead_curvature_bound = kbar;
-    p.k_rob = k_rob;
+    p.chain.order = 1;
+    p.chain.vehicle_wheelbase_m = vehicle_wheelbase;
+    p.chain.wheelbases_m[0] = vehicle_wheelbase;
+    p.chain.lead_curvature_bound = kbar;
+    p.law.k_rob = k_rob;
     return p;
   }
   return second_order_parameters(options.base, vehicle_wheelbase, lead_wheelbase, kbar, k_rob);
@@ -96,7 +96,7 @@ ScheduleEntry make_entry(const Problem& problem, VelocityRegion region, double l
                               o.k_rob_floor, o.k_rob_ceiling);
   const ControllerParameters p =
       parameters_for(o, problem.vehicle.wheelbase_m, entry.lead_wheelbase_m, kbar, entry.k_rob);
-  entry.fictive_wheelbase_m = p.wheelbases_m[0];
+  entry.fictive_wheelbase_m = p.chain.wheelbases_m[0];
   const Exact e = exact_at(problem, p);
   entry.max_steering_angle_rad = e.angle;
   entry.max_steering_rate_radps = e.rate;
@@ -340,8 +340,8 @@ ControllerParameters schedule_entry_parameters(const TuningOptions& options,
                                                const ScheduleEntry& entry) noexcept {
   ControllerParameters p = parameters_for(options, vehicle_wheelbase_m, entry.lead_wheelbase_m,
                                           entry.lead_curvature_bound, entry.k_rob);
-  p.feedforward_share = entry.feedforward_curvature_bound / entry.lead_curvature_bound;
-  p.feedforward_curvature_rate = entry.feedforward_curvature_rate;
+  p.feedforward.share = entry.feedforward_curvature_bound / entry.lead_curvature_bound;
+  p.feedforward.curvature_rate = entry.feedforward_curvature_rate;
   return p;
 }
 

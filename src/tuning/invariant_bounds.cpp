@@ -25,15 +25,15 @@ double lead_curvature_bound_for_steering_angle(const ControllerParameters& param
     text << "max_steering_angle_rad = " << max_steering_angle_rad << " must be in (0, pi/2)";
     fail(text.str());
   }
-  if (parameters.order < 1 || parameters.order > ControllerParameters::max_order) {
-    fail("order = " + std::to_string(parameters.order) + " must be in [1, " +
+  if (parameters.chain.order < 1 || parameters.chain.order > ControllerParameters::max_order) {
+    fail("order = " + std::to_string(parameters.chain.order) + " must be in [1, " +
          std::to_string(ControllerParameters::max_order) + "] for a steering-angle bound");
   }
   // 1/kbar_n^2 = 1/kbar_0^2 + sum lambda_i^2 (header); each factor keeps kbar_i lambda_i < 1.
-  const double kbar_0 = std::tan(max_steering_angle_rad) / parameters.vehicle_wheelbase_m;
+  const double kbar_0 = std::tan(max_steering_angle_rad) / parameters.chain.vehicle_wheelbase_m;
   double inverse_squared = 1.0 / (kbar_0 * kbar_0);
-  for (int i = 0; i < parameters.order; ++i) {
-    const double lambda = parameters.wheelbases_m[static_cast<std::size_t>(i)];
+  for (int i = 0; i < parameters.chain.order; ++i) {
+    const double lambda = parameters.chain.wheelbases_m[static_cast<std::size_t>(i)];
     if (!std::isfinite(lambda) || lambda <= 0.0) {
       fail("wheelbases_m[" + std::to_string(i) + "] = " + std::to_string(lambda) +
            " must be finite and > 0");
@@ -95,13 +95,13 @@ ControllerParameters second_order_parameters(const ControllerParameters& base,
                                              double vehicle_wheelbase_m, double lead_wheelbase_m,
                                              double lead_curvature_bound, double k_rob) noexcept {
   ControllerParameters parameters = base;
-  parameters.order = 2;
-  parameters.vehicle_wheelbase_m = vehicle_wheelbase_m;
-  parameters.wheelbases_m[0] =
+  parameters.chain.order = 2;
+  parameters.chain.vehicle_wheelbase_m = vehicle_wheelbase_m;
+  parameters.chain.wheelbases_m[0] =
       cornering_front_wheelbase(vehicle_wheelbase_m, lead_wheelbase_m * lead_wheelbase_m);
-  parameters.wheelbases_m[1] = lead_wheelbase_m;
-  parameters.lead_curvature_bound = lead_curvature_bound;
-  parameters.k_rob = k_rob;
+  parameters.chain.wheelbases_m[1] = lead_wheelbase_m;
+  parameters.chain.lead_curvature_bound = lead_curvature_bound;
+  parameters.law.k_rob = k_rob;
   return parameters;
 }
 

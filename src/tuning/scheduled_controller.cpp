@@ -28,8 +28,13 @@ ScheduledController::ScheduledController(GainSchedule schedule, std::shared_ptr<
 ControllerParameters ScheduledController::parameters_at(double speed_mps) const noexcept {
   ControllerParameters p = schedule_.parameters_at(speed_mps);
   if (compensation_) {
-    p.actuator_delay_s = compensation_->delay_s(speed_mps);
-    p.feedforward_catch_up = compensation_->catch_up(speed_mps);
+    // A group switched on must carry a value (ControllerParameters::validate): a zero delay
+    // (an ideal actuator at rest) switches the predictor off, and the catch-up needs a
+    // feedforward to catch up with.
+    const double delay = compensation_->delay_s(speed_mps);
+    p.delay_compensation.enabled = delay > 0.0;
+    p.delay_compensation.actuator_delay_s = delay;
+    p.feedforward.catch_up = p.feedforward.share > 0.0 ? compensation_->catch_up(speed_mps) : 0.0;
   }
   return p;
 }

@@ -63,7 +63,7 @@ StaticMap::StaticMap(const StaticMapOptions& options, bool use_shipped_table) : 
   }
   table_.assign(size, MapValue{});
   ControllerParameters base;
-  base.k_rob = 0.0;
+  base.law.k_rob = 0.0;
   for (int i = 0; i < options_.ratio_samples; ++i) {
     const double ratio = ratio_at(i);
     for (int j = 1; j <= angles; ++j) {

@@ -14,9 +14,9 @@ namespace smoothsteer {
 
 ControllerParameters default_steering_system_controller() {
   ControllerParameters p;
-  p.cornering_target = CorneringTarget::rear_axle_exact;
-  p.curvature_preview = CurvaturePreview::planned_jumps;
-  p.boundary_layer = 0.03;
+  p.feedforward.cornering_target = CorneringTarget::rear_axle_exact;
+  p.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
+  p.law.boundary_layer = 0.03;
   p.governor.enabled = true;
   return p;
 }
@@ -95,16 +95,19 @@ ControllerParameters steering_system_controller(const VehicleDescription& car,
                                                 const SteeringSystemOptions& options) {
   const VehicleParameters& vehicle = car.vehicle;
   ControllerParameters p = options.controller;
-  p.vehicle_wheelbase_m = vehicle.wheelbase_m();
+  p.chain.vehicle_wheelbase_m = vehicle.wheelbase_m();
   // As the scenario files' keys slip_preview and friction_guard (docs/scenarios.md).
   const double most = ControllerParameters::max_slip_gradient_s2pm;
-  p.rear_slip_gradient_s2pm =
+  p.single_track.rear_slip_gradient_s2pm =
       options.slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0;
-  p.front_slip_gradient_s2pm =
+  p.single_track.front_slip_gradient_s2pm =
       options.slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0;
-  p.max_lateral_acceleration_mps2 = options.friction_guard
-                                        ? vehicle.friction_limit_mps2()
-                                        : std::numeric_limits<double>::infinity();
+  p.friction_guard.max_lateral_acceleration_mps2 = options.friction_guard
+                                                       ? vehicle.friction_limit_mps2()
+                                                       : std::numeric_limits<double>::infinity();
+  p.single_track.enabled = p.single_track.rear_slip_gradient_s2pm != 0.0 ||
+                           p.single_track.front_slip_gradient_s2pm != 0.0;
+  p.friction_guard.enabled = std::isfinite(p.friction_guard.max_lateral_acceleration_mps2);
   if (p.governor.enabled) {
     if (!std::isfinite(vehicle.max_steering_acceleration_radps2)) {
       throw std::invalid_argument(
@@ -116,7 +119,9 @@ ControllerParameters steering_system_controller(const VehicleDescription& car,
     p.governor.max_steering_angle_rad = vehicle.max_steering_angle_rad;
     p.governor.max_lateral_acceleration_mps2 = vehicle.friction_limit_mps2();
   }
-  p.actuator_delay_s = options.actuator_delay_s.value_or(actuator_group_delay_s(car.actuator));
+  p.delay_compensation.actuator_delay_s =
+      options.actuator_delay_s.value_or(actuator_group_delay_s(car.actuator));
+  p.delay_compensation.enabled = p.delay_compensation.actuator_delay_s != 0.0;
   return p;
 }
 
@@ -128,7 +133,7 @@ SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_p
   TuningOptions tuning;
   tuning.certificate = Certificate::feedforward;
   tuning.base = steering_system_controller(car, options);
-  tuning.order = tuning.base.order;
+  tuning.order = tuning.base.chain.order;
   tuning.feedforward_headroom = options.feedforward_headroom;
   tuning.max_longitudinal_acceleration_mps2 = options.max_longitudinal_acceleration_mps2;
   apply_path_demand(tuning, path);

@@ -20,13 +20,13 @@ constexpr double kRefineTolerance = 1e-9;
 SteeringDerivatives vehicle_steering_derivatives(const ControllerParameters& parameters,
                                                  const ChainAngles& delta,
                                                  double lead_curvature) noexcept {
-  const FrontAngleDerivatives d = front_angle_derivatives(delta, parameters.wheelbases_m.data(),
-                                                          parameters.order, lead_curvature);
-  const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
+  const FrontAngleDerivatives d = front_angle_derivatives(
+      delta, parameters.chain.wheelbases_m.data(), parameters.chain.order, lead_curvature);
+  const double ratio = parameters.chain.vehicle_wheelbase_m / parameters.chain.wheelbases_m[0];
   const double g = vehicle_angle_gain(delta[0], ratio);
   SteeringDerivatives result;
   result.rate_per_meter = g * d.first;
-  if (parameters.order >= 2) {
+  if (parameters.chain.order >= 2) {
     result.acceleration_per_meter2 =
         vehicle_angle_gain_slope(delta[0], ratio) * d.first * d.first + g * d.second;
   }
@@ -35,9 +35,9 @@ SteeringDerivatives vehicle_steering_derivatives(const ControllerParameters& par
 
 SteeringDerivatives worst_case_steering_derivatives(const ControllerParameters& parameters) {
   parameters.validate();
-  if (parameters.order < 1 || parameters.order > 2) {
+  if (parameters.chain.order < 1 || parameters.chain.order > 2) {
     throw std::invalid_argument(
-        "worst_case_steering_derivatives: order = " + std::to_string(parameters.order) +
+        "worst_case_steering_derivatives: order = " + std::to_string(parameters.chain.order) +
         " is not supported (the static map covers n = 1 and n = 2)");
   }
   const ChainBounds bounds = compute_chain_bounds(parameters);
@@ -45,7 +45,7 @@ SteeringDerivatives worst_case_steering_derivatives(const ControllerParameters& 
   // Rate: the 1-D supremum of compute_chain_bounds() (its extreme puts delta_2 on the box edge,
   // |kappa_1| = kbar_1, eq. ddelta_kappaf); one implementation for controller and tuner.
   result.rate_per_meter = bounds.steering_rate_per_meter;
-  if (parameters.order == 1) {
+  if (parameters.chain.order == 1) {
     result.acceleration_per_meter2 = std::numeric_limits<double>::infinity();
     return result;
   }
@@ -53,7 +53,7 @@ SteeringDerivatives worst_case_steering_derivatives(const ControllerParameters& 
   // kappa), so -kbar_l gives the same extreme. f is affine in kappa_l, so interior values of
   // kappa_l (at a switch) cannot be worse.
   const double a1 = bounds.angle[0], a2 = bounds.angle[1];
-  const double kbar = parameters.lead_curvature_bound;
+  const double kbar = parameters.chain.lead_curvature_bound;
   auto value = [&](double d1, double d2) {
     ChainAngles delta{};
     delta[0] = d1, delta[1] = d2;

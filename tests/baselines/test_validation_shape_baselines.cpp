@@ -58,7 +58,7 @@ TEST(ValidationShape, ComparisonControllersParameters) {
 
 TEST(ValidationShape, ControllerStructs) {
   ControllerParameters parameters;
-  parameters.k_rob = 1.5;
+  parameters.law.k_rob = 1.5;
   expect_shape(ControllerParameters{}, parameters,
                "ControllerParameters: k_rob = 1.5 must be in [0, 1) (eq. sigma divides by 1 - "
                "k_rob)");

@@ -128,13 +128,14 @@ TEST(ChainInverse, ExactTargetTracksASmoothPathTenTimesCloserThanTheStationaryOn
   double worst[2] = {0.0, 0.0};
   for (int exact = 0; exact < 2; ++exact) {
     ControllerParameters p;
-    p.lead_curvature_bound = 0.15;
-    p.feedforward_share = 0.7;
-    p.boundary_layer = 0.01;
-    p.cornering_target = exact ? CorneringTarget::rear_axle_exact : CorneringTarget::rear_axle;
+    p.chain.lead_curvature_bound = 0.15;
+    p.feedforward.share = 0.7;
+    p.law.boundary_layer = 0.01;
+    p.feedforward.cornering_target =
+        exact ? CorneringTarget::rear_axle_exact : CorneringTarget::rear_axle;
     LeadWheelController controller(p, path);
     KinematicLoopOptions options;
-    options.wheelbase_m = p.vehicle_wheelbase_m;
+    options.wheelbase_m = p.chain.vehicle_wheelbase_m;
     options.speed_mps = 8.0;
     options.period_s = 0.01;
     options.duration_s = 150.0 / options.speed_mps;

@@ -132,24 +132,24 @@ TEST(ChainMatchesPaper, SecondDerivativeMatchesFiniteDifferenceForLongerChains) 
     Random random(seed);
     const int n = random.integer(2, 6);
     ControllerParameters parameters;
-    parameters.order = n;
+    parameters.chain.order = n;
     for (int i = 0; i < n; ++i)
-      parameters.wheelbases_m[static_cast<std::size_t>(i)] = random.uniform(0.3, 2.0);
-    parameters.lead_curvature_bound = 0.02;
+      parameters.chain.wheelbases_m[static_cast<std::size_t>(i)] = random.uniform(0.3, 2.0);
+    parameters.chain.lead_curvature_bound = 0.02;
     const ChainBounds bounds = compute_chain_bounds(parameters);
     ChainAngles angles{};
     for (int i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
       angles[k] = random.uniform(-0.9, 0.9) * bounds.angle[k];
     }
-    const double kappa = random.uniform(-1.0, 1.0) * parameters.lead_curvature_bound;
+    const double kappa = random.uniform(-1.0, 1.0) * parameters.chain.lead_curvature_bound;
     SCOPED_TRACE(seed_message(seed) + " n=" + std::to_string(n));
     const FrontAngleDerivatives analytic =
-        front_angle_derivatives(angles, parameters.wheelbases_m.data(), n, kappa);
+        front_angle_derivatives(angles, parameters.chain.wheelbases_m.data(), n, kappa);
     const double h = 1e-5;
     ChainAngles forward = angles, backward = angles;
-    integrate_chain(forward, parameters.wheelbases_m.data(), n, kappa, h, bounds.angle);
-    integrate_chain(backward, parameters.wheelbases_m.data(), n, kappa, -h, bounds.angle);
+    integrate_chain(forward, parameters.chain.wheelbases_m.data(), n, kappa, h, bounds.angle);
+    integrate_chain(backward, parameters.chain.wheelbases_m.data(), n, kappa, -h, bounds.angle);
     EXPECT_NEAR(analytic.first, (forward[0] - backward[0]) / (2.0 * h), 1e-7);
     EXPECT_NEAR(analytic.second, (forward[0] - 2.0 * angles[0] + backward[0]) / (h * h), 2e-3);
   }
@@ -162,20 +162,20 @@ TEST(ChainBounds, RateBoundEqualsBruteForce) {
     const auto seed = case_seed(c);
     Random random(seed);
     ControllerParameters parameters;
-    parameters.order = random.integer(1, 4);
-    parameters.vehicle_wheelbase_m = random.uniform(1.5, 4.0);
-    for (int i = 0; i < parameters.order; ++i) {
-      parameters.wheelbases_m[static_cast<std::size_t>(i)] =
-          random.uniform(i == 0 ? 0.3 : 0.1, 0.95) * parameters.vehicle_wheelbase_m;
+    parameters.chain.order = random.integer(1, 4);
+    parameters.chain.vehicle_wheelbase_m = random.uniform(1.5, 4.0);
+    for (int i = 0; i < parameters.chain.order; ++i) {
+      parameters.chain.wheelbases_m[static_cast<std::size_t>(i)] =
+          random.uniform(i == 0 ? 0.3 : 0.1, 0.95) * parameters.chain.vehicle_wheelbase_m;
     }
-    parameters.lead_curvature_bound =
+    parameters.chain.lead_curvature_bound =
         random.uniform(0.05, 0.9) /
-        parameters.wheelbases_m[static_cast<std::size_t>(parameters.order - 1)];
+        parameters.chain.wheelbases_m[static_cast<std::size_t>(parameters.chain.order - 1)];
     if (!parameters.is_valid()) continue;
     SCOPED_TRACE(seed_message(seed));
     const ChainBounds bounds = compute_chain_bounds(parameters);
-    const double ratio = parameters.vehicle_wheelbase_m / parameters.wheelbases_m[0];
-    const double kbar_1 = bounds.curvature[1], lambda_1 = parameters.wheelbases_m[0];
+    const double ratio = parameters.chain.vehicle_wheelbase_m / parameters.chain.wheelbases_m[0];
+    const double kbar_1 = bounds.curvature[1], lambda_1 = parameters.chain.wheelbases_m[0];
     double brute = 0.0;
     constexpr int samples = 200000;
     for (int k = 0; k <= samples; ++k) {
@@ -195,22 +195,25 @@ TEST(ChainMatchesPaper, KappaLMaxNeedsTheSquareRoot) {
     const auto seed = case_seed(c);
     Random random(seed);
     ControllerParameters parameters;
-    parameters.order = 2;
-    parameters.vehicle_wheelbase_m = random.uniform(2.0, 4.0);
-    parameters.wheelbases_m[1] = random.uniform(0.2, 0.9) * parameters.vehicle_wheelbase_m;
-    const double lambda_l = parameters.wheelbases_m[1];
-    parameters.wheelbases_m[0] = std::sqrt(
-        parameters.vehicle_wheelbase_m * parameters.vehicle_wheelbase_m - lambda_l * lambda_l);
-    const double lambda = parameters.wheelbases_m[0];
+    parameters.chain.order = 2;
+    parameters.chain.vehicle_wheelbase_m = random.uniform(2.0, 4.0);
+    parameters.chain.wheelbases_m[1] =
+        random.uniform(0.2, 0.9) * parameters.chain.vehicle_wheelbase_m;
+    const double lambda_l = parameters.chain.wheelbases_m[1];
+    parameters.chain.wheelbases_m[0] =
+        std::sqrt(parameters.chain.vehicle_wheelbase_m * parameters.chain.vehicle_wheelbase_m -
+                  lambda_l * lambda_l);
+    const double lambda = parameters.chain.wheelbases_m[0];
     const double dbar = random.uniform(0.1, 1.0);
     const double s = std::sin(dbar);
-    parameters.lead_curvature_bound = s / std::sqrt(lambda * lambda + lambda_l * lambda_l * s * s);
+    parameters.chain.lead_curvature_bound =
+        s / std::sqrt(lambda * lambda + lambda_l * lambda_l * s * s);
     SCOPED_TRACE(seed_message(seed));
     ASSERT_TRUE(parameters.validation_error().empty()) << parameters.validation_error();
     EXPECT_NEAR(compute_chain_bounds(parameters).angle[0], dbar, 1e-12);
     const double printed = s / (lambda * lambda + lambda_l * lambda_l * s * s);
     if (std::abs(lambda * lambda + lambda_l * lambda_l * s * s - 1.0) > 0.05) {
-      EXPECT_GT(std::abs(printed - parameters.lead_curvature_bound), 1e-3);
+      EXPECT_GT(std::abs(printed - parameters.chain.lead_curvature_bound), 1e-3);
     }
   }
 }

@@ -38,9 +38,9 @@ double first_command(LeadWheelController& controller, double speed, double dt) {
 TEST(CuspAndReset, ResetContinuesFromTheMeasuredAngle) {
   // reset(0.3) used to restart at 0 (paper's law) or at the stationary angle of kbar_ff.
   const auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 100.0));
-  for (const double share : {0.0, ControllerParameters{}.feedforward_share}) {
+  for (const double share : {0.0, ControllerParameters{}.feedforward.share}) {
     ControllerParameters p;
-    p.feedforward_share = share;
+    p.feedforward.share = share;
     LeadWheelController controller(p, path);
     const SteeringCertificate& c = controller.certificate();
     for (const double measured : {0.3, -0.2, 0.05, 0.0}) {
@@ -57,12 +57,12 @@ TEST(CuspAndReset, ResetContinuesFromTheMeasuredAngle) {
 TEST(CuspAndReset, ReversingOnACircleKeepsTheSteering) {
   // Reversing on an 8 m circle: the default parameters jumped from 0.3225 to 0.2038 rad.
   const auto path = std::make_shared<const Path>(Path::circle({0.0, 8.0}, 8.0, true, -0.5 * pi));
-  for (const double share : {0.0, ControllerParameters{}.feedforward_share}) {
+  for (const double share : {0.0, ControllerParameters{}.feedforward.share}) {
     ControllerParameters p;
-    p.feedforward_share = share;
+    p.feedforward.share = share;
     LeadWheelController controller(p, path);
     const SteeringCertificate& c = controller.certificate();
-    const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+    const KinematicSingleTrack plant{p.chain.vehicle_wheelbase_m};
     Pose2 pose{{0.0, 0.0}, 0.0};
     const double dt = 0.02;
     HeldCommand held;
@@ -88,11 +88,12 @@ void reversing_loop(std::uint64_t seed) {
   Random random(seed + 271);
   const int order = random.coin() ? 2 : 1;
   ControllerParameters p = random_parameters(random, order, random.uniform(0.15, 0.6));
-  p.feedforward_share = random.coin() ? 0.0 : random.uniform(0.0, 0.9);
-  p.feedforward_curvature_rate = random.uniform(0.001, 0.05);
-  p.boundary_layer = random.coin() ? 0.0 : random.uniform(0.005, 0.05);
+  p.feedforward.share = random.coin() ? 0.0 : random.uniform(0.0, 0.9);
+  p.feedforward.curvature_rate = random.uniform(0.001, 0.05);
+  p.law.boundary_layer = random.coin() ? 0.0 : random.uniform(0.005, 0.05);
   const auto kind = static_cast<PathKind>(random.integer(0, 3));
-  const auto path = random_path(random, kind, random.uniform(0.3, 1.0) * p.lead_curvature_bound);
+  const auto path =
+      random_path(random, kind, random.uniform(0.3, 1.0) * p.chain.lead_curvature_bound);
   const PathPoint begin = path->evaluate(0.0);
   const Pose2 start{
       begin.position + random.uniform(-1.0, 1.0) * unit_from_heading(begin.heading_rad + 0.5 * pi),
@@ -100,12 +101,12 @@ void reversing_loop(std::uint64_t seed) {
   const double dt = random.uniform(0.01, 0.05);
   const double speed_magnitude = random.uniform(0.3, 4.0);
   std::ostringstream text;
-  text << seed_message(seed) << " " << describe(p) << " share=" << p.feedforward_share
+  text << seed_message(seed) << " " << describe(p) << " share=" << p.feedforward.share
        << " path=" << to_string(kind) << " dt=" << dt << " |v|=" << speed_magnitude;
   SCOPED_TRACE(text.str());
   LeadWheelController controller(p, path);
   const SteeringCertificate& c = controller.certificate();
-  const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+  const KinematicSingleTrack plant{p.chain.vehicle_wheelbase_m};
   smoothsteer::detail::count_closed_loop();
   Pose2 pose = start;
   HeldCommand held;

@@ -50,7 +50,7 @@ ManoeuvreResult drive(const PathPlan& plan, LeadWheelController& controller) {
   Pose2 pose{start.position,
              wrap_angle(start.heading_rad + (first.gear == Gear::reverse ? pi : 0.0))};
   CuspSequencer sequencer(plan, controller);
-  const KinematicSingleTrack model{controller.parameters().vehicle_wheelbase_m};
+  const KinematicSingleTrack model{controller.parameters().chain.vehicle_wheelbase_m};
   const ChainBounds bounds = controller.bounds();
   ManoeuvreResult result;
   std::size_t piece = 0;
@@ -87,9 +87,9 @@ ManoeuvreResult drive(const PathPlan& plan, LeadWheelController& controller) {
 }
 
 void expect_reached(const char* name, const PathPlan& plan) {
-  for (const double share : {ControllerParameters{}.feedforward_share, 0.0}) {
+  for (const double share : {ControllerParameters{}.feedforward.share, 0.0}) {
     ControllerParameters parameters;
-    parameters.feedforward_share = share;
+    parameters.feedforward.share = share;
     LeadWheelController controller(parameters, plan.piece(0).path);
     const ManoeuvreResult result = drive(plan, controller);
     std::printf(

@@ -30,16 +30,16 @@ using namespace smoothsteer::testing;
 double worst_error(const std::shared_ptr<const Path>& path, double length, double speed,
                    double rate, double catch_up, int order) {
   ControllerParameters p;
-  p.order = order;
-  p.lead_curvature_bound = 0.12;
-  p.feedforward_share = 0.7;
-  p.feedforward_curvature_rate = rate;
-  p.feedforward_catch_up = catch_up;
-  p.boundary_layer = 0.01;
-  p.cornering_target = CorneringTarget::rear_axle_exact;
+  p.chain.order = order;
+  p.chain.lead_curvature_bound = 0.12;
+  p.feedforward.share = 0.7;
+  p.feedforward.curvature_rate = rate;
+  p.feedforward.catch_up = catch_up;
+  p.law.boundary_layer = 0.01;
+  p.feedforward.cornering_target = CorneringTarget::rear_axle_exact;
   LeadWheelController controller(p, path);
   KinematicLoopOptions options;
-  options.wheelbase_m = p.vehicle_wheelbase_m;
+  options.wheelbase_m = p.chain.vehicle_wheelbase_m;
   options.speed_mps = speed;
   options.period_s = 0.02;
   options.duration_s = length / speed;

@@ -26,26 +26,29 @@ using namespace smoothsteer::testing;
 //! Random feedforward parameters of order n: share, finite rate, boundary layer and target.
 ControllerParameters random_feedforward_parameters(Random& random, int order) {
   ControllerParameters p = random_parameters(random, order, random.uniform(0.15, 0.6));
-  p.feedforward_share = random.uniform(0.0, 0.9);
-  p.feedforward_curvature_rate = random.uniform(0.001, 0.05);
-  p.boundary_layer = random.coin() ? 0.0 : random.uniform(0.005, 0.05);
-  p.feedforward_catch_up = random.coin() ? 0.0 : random.uniform(0.0, 1.0);
+  p.feedforward.share = random.uniform(0.0, 0.9);
+  p.feedforward.curvature_rate = random.uniform(0.001, 0.05);
+  p.law.boundary_layer = random.coin() ? 0.0 : random.uniform(0.005, 0.05);
+  p.feedforward.catch_up = random.coin() ? 0.0 : random.uniform(0.0, 1.0);
   const CorneringTarget targets[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
                                      CorneringTarget::lead_wheel};
-  p.cornering_target = targets[random.integer(0, 2)];
-  if (p.cornering_target == CorneringTarget::rear_axle_exact && order <= 2 && random.coin()) {
-    p.curvature_preview = CurvaturePreview::planned_jumps;
+  p.feedforward.cornering_target = targets[random.integer(0, 2)];
+  if (p.feedforward.cornering_target == CorneringTarget::rear_axle_exact && order <= 2 &&
+      random.coin()) {
+    p.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
   }
   return p;
 }
 
 std::string describe_case(const ControllerParameters& p, const char* path, const Pose2& start) {
   std::ostringstream text;
-  text << describe(p) << " share=" << p.feedforward_share
-       << " L_ff=" << p.feedforward_curvature_rate << " catch_up=" << p.feedforward_catch_up
-       << " eps=" << p.boundary_layer << " target=" << static_cast<int>(p.cornering_target)
-       << " preview=" << static_cast<int>(p.curvature_preview) << " path=" << path << " start=("
-       << start.position.x << "," << start.position.y << "," << start.heading_rad << ")";
+  text << describe(p) << " share=" << p.feedforward.share
+       << " L_ff=" << p.feedforward.curvature_rate << " catch_up=" << p.feedforward.catch_up
+       << " eps=" << p.law.boundary_layer
+       << " target=" << static_cast<int>(p.feedforward.cornering_target)
+       << " preview=" << static_cast<int>(p.feedforward.curvature_preview) << " path=" << path
+       << " start=(" << start.position.x << "," << start.position.y << "," << start.heading_rad
+       << ")";
   return text.str();
 }
 
@@ -58,14 +61,15 @@ TEST(FeedforwardCertificate, HeldCommandStaysWithinTheCertificate) {
     const int order = random.coin() ? 2 : 1;
     const ControllerParameters p = random_feedforward_parameters(random, order);
     const auto kind = static_cast<PathKind>(random.integer(0, 3));
-    const auto path = random_path(random, kind, random.uniform(0.3, 1.2) * p.lead_curvature_bound);
+    const auto path =
+        random_path(random, kind, random.uniform(0.3, 1.2) * p.chain.lead_curvature_bound);
     const Pose2 start{{random.uniform(-60.0, 60.0), random.uniform(-60.0, 60.0)},
                       random.uniform(-pi, pi)};
     SCOPED_TRACE(seed_message(seed) + " " + describe_case(p, to_string(kind), start));
     LeadWheelController controller(p, path);
     const SteeringCertificate& c = controller.certificate();
     ASSERT_TRUE(std::isfinite(c.rate_per_meter));
-    const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+    const KinematicSingleTrack plant{p.chain.vehicle_wheelbase_m};
     const double dt = random.uniform(0.01, 0.05);
     const double acceleration = random.uniform(0.0, 2.0);
     double speed = random.uniform(1.0, 20.0), direction = random.coin() ? 1.0 : -1.0;
@@ -121,13 +125,13 @@ TEST(FeedforwardCertificate, SwitchingShareAloneGivesTheBoxBound) {
   for (int k = 0; k < cases; ++k) {
     Random random(case_seed(k) + 102);
     ControllerParameters p = random_parameters(random, random.integer(1, 4), 0.5);
-    p.feedforward_share = 0.0;
-    p.feedforward_curvature_rate = 0.0;
+    p.feedforward.share = 0.0;
+    p.feedforward.curvature_rate = 0.0;
     SCOPED_TRACE(seed_message(case_seed(k)) + " " + describe(p));
     const double certified = feedforward_certificate(p).rate_per_meter;
     const double box = compute_chain_bounds(p).steering_rate_per_meter;
     EXPECT_GE(certified, box * (1.0 - 1e-9));
-    if (p.order == 1) {
+    if (p.chain.order == 1) {
       EXPECT_LE(certified, box * 1.5);
     }
   }
@@ -139,13 +143,13 @@ TEST(FeedforwardCertificate, ConvergesFromFarStartsOnCurvedPaths) {
     const std::uint64_t seed = case_seed(k);  // replays with SMOOTHSTEER_SEED=seed
     Random random(seed + 103);
     ControllerParameters p = random_feedforward_parameters(random, random.integer(1, 2));
-    p.feedforward_share = random.uniform(0.4, 0.8);
-    p.boundary_layer = 0.01;
+    p.feedforward.share = random.uniform(0.4, 0.8);
+    p.law.boundary_layer = 0.01;
     // The rear axle itself converges, with either rear-axle target.
-    p.cornering_target =
+    p.feedforward.cornering_target =
         random.coin() ? CorneringTarget::rear_axle : CorneringTarget::rear_axle_exact;
-    if (p.cornering_target != CorneringTarget::rear_axle_exact) {
-      p.curvature_preview = CurvaturePreview::centred_ramp;
+    if (p.feedforward.cornering_target != CorneringTarget::rear_axle_exact) {
+      p.feedforward.curvature_preview = CurvaturePreview::centred_ramp;
     }
     const auto kind = random.coin() ? PathKind::circle : PathKind::line;
     const auto path = random_path(random, kind, 0.9 * p.feedforward_curvature_bound());
@@ -154,7 +158,7 @@ TEST(FeedforwardCertificate, ConvergesFromFarStartsOnCurvedPaths) {
     SCOPED_TRACE(seed_message(seed) + " " + describe_case(p, to_string(kind), start));
     LeadWheelController controller(p, path);
     KinematicLoopOptions options;
-    options.wheelbase_m = p.vehicle_wheelbase_m;
+    options.wheelbase_m = p.chain.vehicle_wheelbase_m;
     options.speed_mps = random.uniform(2.0, 10.0);
     options.period_s = 0.02;
     options.duration_s = 4000.0 / options.speed_mps;

@@ -157,7 +157,7 @@ LoopFigures run_loop(const ControllerParameters& p, const std::shared_ptr<const 
                      double speed) {
   LeadWheelController controller(p, path);
   KinematicLoopOptions options;
-  options.wheelbase_m = p.vehicle_wheelbase_m;
+  options.wheelbase_m = p.chain.vehicle_wheelbase_m;
   options.speed_mps = speed;
   options.period_s = 0.02;
   options.duration_s = (path->length() - 5.0) / speed;
@@ -182,20 +182,20 @@ TEST(JumpPlan, TracksLineAndArcPathsCloserThanTheCentredRamp) {
     const std::uint64_t seed = case_seed(k);  // replays with SMOOTHSTEER_SEED=seed
     Random random(seed + 402);
     ControllerParameters p = random_parameters(random, random.integer(1, 2), 0.5);
-    p.feedforward_share = random.uniform(0.5, 0.8);
-    p.feedforward_curvature_rate =
-        random.uniform(0.3, 1.0) * p.feedforward_curvature_bound() / p.wheelbases_m[0];
-    p.boundary_layer = 0.01;
-    p.cornering_target = CorneringTarget::rear_axle_exact;
+    p.feedforward.share = random.uniform(0.5, 0.8);
+    p.feedforward.curvature_rate =
+        random.uniform(0.3, 1.0) * p.feedforward_curvature_bound() / p.chain.wheelbases_m[0];
+    p.law.boundary_layer = 0.01;
+    p.feedforward.cornering_target = CorneringTarget::rear_axle_exact;
     const auto path =
         random_path(random, PathKind::line_arcs, p.feedforward_curvature_bound() / 2.0);
     const double speed = random.uniform(3.0, 12.0);
     std::ostringstream inputs;
-    inputs << seed_message(seed) << " " << describe(p) << " share=" << p.feedforward_share
-           << " L_ff=" << p.feedforward_curvature_rate << " speed=" << speed;
+    inputs << seed_message(seed) << " " << describe(p) << " share=" << p.feedforward.share
+           << " L_ff=" << p.feedforward.curvature_rate << " speed=" << speed;
     SCOPED_TRACE(inputs.str());
     const LoopFigures ramp = run_loop(p, path, speed);
-    p.curvature_preview = CurvaturePreview::planned_jumps;
+    p.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
     const LoopFigures planned = run_loop(p, path, speed);
     EXPECT_LE(planned.max_rate_ratio, 1.0 + 1e-6);
     const double ratio = planned.max_error / ramp.max_error;

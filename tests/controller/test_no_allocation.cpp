@@ -22,10 +22,12 @@ TEST(RealTime, UpdateDoesNotAllocate) {
   auto path = std::make_shared<const Path>(Path::from_waypoints(waypoints));
   for (int order = 0; order <= 4; ++order) {
     ControllerParameters parameters;
-    parameters.order = order;
-    parameters.lead_curvature_bound = 0.05;
-    parameters.actuator_delay_s = order % 2 == 1 ? 0.3 : 0.0;  // covers the delay prediction
-    if (order % 2 == 0) parameters.feedforward_curvature_rate = 0.01;  // and the preview
+    parameters.chain.order = order;
+    parameters.chain.lead_curvature_bound = 0.05;
+    // Odd orders cover the delay prediction.
+    parameters.delay_compensation = {.enabled = order % 2 == 1,
+                                     .actuator_delay_s = order % 2 == 1 ? 0.3 : 0.0};
+    if (order % 2 == 0) parameters.feedforward.curvature_rate = 0.01;  // and the preview
     if (order == 1 || order == 2) {                                    // and the steering governor
       parameters.governor.enabled = true;
       parameters.governor.max_steering_rate_radps = 0.4;
@@ -36,11 +38,12 @@ TEST(RealTime, UpdateDoesNotAllocate) {
     ControllerOutput output;
     Vec2 position{5.0, 30.0};
     ControllerParameters retuned = parameters, invalid = parameters;
-    invalid.k_rob = 2.0;
+    invalid.law.k_rob = 2.0;
     const long before = allocation_count.load();
     for (int k = 0; k < 5000; ++k) {
       // retune() (gain schedules) is a real-time call too, valid or not.
-      retuned.lead_curvature_bound = parameters.lead_curvature_bound * (1.0 - 0.5 * (k % 7) / 7.0);
+      retuned.chain.lead_curvature_bound =
+          parameters.chain.lead_curvature_bound * (1.0 - 0.5 * (k % 7) / 7.0);
       controller.retune(retuned);
       controller.retune(invalid);
       // Includes far-away global searches, warm starts, reversing and invalid input.
@@ -65,12 +68,12 @@ TEST(RealTime, PlannedJumpsUpdateDoesNotAllocate) {
   ASSERT_GT(path->curvature_jumps().size(), 50u);
   for (int order = 1; order <= 2; ++order) {
     ControllerParameters parameters;
-    parameters.order = order;
-    parameters.lead_curvature_bound = 0.08;
-    parameters.feedforward_share = 0.8;
-    parameters.feedforward_curvature_rate = 0.02;
-    parameters.cornering_target = CorneringTarget::rear_axle_exact;
-    parameters.curvature_preview = CurvaturePreview::planned_jumps;
+    parameters.chain.order = order;
+    parameters.chain.lead_curvature_bound = 0.08;
+    parameters.feedforward.share = 0.8;
+    parameters.feedforward.curvature_rate = 0.02;
+    parameters.feedforward.cornering_target = CorneringTarget::rear_axle_exact;
+    parameters.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
     LeadWheelController controller(parameters, path);
     ControllerOutput output;
     Vec2 position{0.0, 1.0};

@@ -58,7 +58,7 @@ struct DriveResult {
 //! new path or nullptr.
 template <typename Replan>
 DriveResult drive(LeadWheelController& controller, double start_offset_m, Replan replan) {
-  const KinematicSingleTrack model{controller.parameters().vehicle_wheelbase_m};
+  const KinematicSingleTrack model{controller.parameters().chain.vehicle_wheelbase_m};
   Pose2 pose{{-20.0, start_offset_m}, 0.0};
   ControllerOutput output;
   DriveResult run;
@@ -100,8 +100,8 @@ DriveResult drive(LeadWheelController& controller, double start_offset_m, Replan
 
 ControllerParameters s_curve_parameters() {
   ControllerParameters parameters;
-  parameters.order = 2;
-  parameters.lead_curvature_bound = 0.1;
+  parameters.chain.order = 2;
+  parameters.chain.lead_curvature_bound = 0.1;
   return parameters;
 }
 

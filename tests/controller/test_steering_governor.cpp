@@ -28,16 +28,16 @@ using namespace smoothsteer::testing;
 ControllerParameters random_governed_parameters(Random& random, int order, double top_speed,
                                                 double longitudinal_acceleration) {
   ControllerParameters p = random_parameters(random, order, random.uniform(0.3, 0.8));
-  p.feedforward_share = random.uniform(0.0, 0.9);
-  p.feedforward_curvature_rate = random.coin() ? random.uniform(0.002, 0.05) : 1e3;
-  p.boundary_layer = random.uniform(0.005, 0.05);
+  p.feedforward.share = random.uniform(0.0, 0.9);
+  p.feedforward.curvature_rate = random.coin() ? random.uniform(0.002, 0.05) : 1e3;
+  p.law.boundary_layer = random.uniform(0.005, 0.05);
   const CorneringTarget targets[] = {CorneringTarget::rear_axle, CorneringTarget::rear_axle_exact,
                                      CorneringTarget::lead_wheel};
-  p.cornering_target = targets[random.integer(0, 2)];
+  p.feedforward.cornering_target = targets[random.integer(0, 2)];
   SteeringGovernor& g = p.governor;
   g.enabled = true;
   g.max_steering_rate_radps = random.uniform(0.2, 2.0);
-  const double viable = 1.5 * top_speed * g.max_steering_rate_radps / p.wheelbases_m[0] +
+  const double viable = 1.5 * top_speed * g.max_steering_rate_radps / p.chain.wheelbases_m[0] +
                         longitudinal_acceleration * g.max_steering_rate_radps;
   g.max_steering_acceleration_radps2 = random.uniform(1.2, 6.0) * viable;
   // At least the derived length (shorter ones can limit-cycle against the rate limit).
@@ -45,10 +45,10 @@ ControllerParameters random_governed_parameters(Random& random, int order, doubl
   if (random.coin()) g.law_length_m = random.uniform(1.0, 3.0) * governed_law_length(p, top_speed);
   // The near-path law's authority as the split certificate would give it for R at the top
   // speed (its switching share alone: rate ~ |v| lambda_veh 2 kbar / lambda_1^2).
-  const double lambda = p.wheelbases_m[0];
+  const double lambda = p.chain.wheelbases_m[0];
   g.certified_switching_bound = std::min(
       p.switching_curvature_bound(), random.uniform(0.2, 1.0) * g.max_steering_rate_radps * lambda *
-                                         lambda / (2.0 * p.vehicle_wheelbase_m * top_speed));
+                                         lambda / (2.0 * p.chain.vehicle_wheelbase_m * top_speed));
   return p;
 }
 
@@ -73,7 +73,7 @@ TEST(SteeringGovernor, HeldCommandStaysWithinTheLimits) {
     const ControllerParameters p =
         random_governed_parameters(random, order, top_speed, longitudinal);
     std::string kind;
-    const auto path = random_tight_path(random, p.lead_curvature_bound, kind);
+    const auto path = random_tight_path(random, p.chain.lead_curvature_bound, kind);
     // Engagement errors near the path's start, or a far start with any heading.
     const bool far = random.coin();
     const PathProjection origin = path->project({0.0, 0.0});
@@ -86,12 +86,12 @@ TEST(SteeringGovernor, HeldCommandStaysWithinTheLimits) {
     std::ostringstream text;
     text << describe(p) << " R=" << g.max_steering_rate_radps
          << " A=" << g.max_steering_acceleration_radps2 << " l=" << g.law_length_m
-         << " share=" << p.feedforward_share << " L_ff=" << p.feedforward_curvature_rate
+         << " share=" << p.feedforward.share << " L_ff=" << p.feedforward.curvature_rate
          << " path=" << kind << " start=(" << start.position.x << "," << start.position.y << ","
          << start.heading_rad << ") dv/dt=" << longitudinal;
     SCOPED_TRACE(seed_message(seed) + " " + text.str());
     LeadWheelController controller(p, path);
-    const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+    const KinematicSingleTrack plant{p.chain.vehicle_wheelbase_m};
     const double dt = random.uniform(0.01, 0.05);
     double speed = random.uniform(1.0, top_speed), direction = random.coin() ? 1.0 : -1.0;
     Pose2 pose = start;
@@ -191,8 +191,8 @@ TEST(SteeringGovernor, GovernedLawConvergesFromFarAway) {
     Random random(seed + 303);
     const int order = random.coin() ? 2 : 1;
     ControllerParameters p = random_governed_parameters(random, order, 20.0, 0.0);
-    p.feedforward_share = random.uniform(0.4, 0.8);
-    p.cornering_target =
+    p.feedforward.share = random.uniform(0.4, 0.8);
+    p.feedforward.cornering_target =
         random.coin() ? CorneringTarget::rear_axle : CorneringTarget::rear_axle_exact;
     const auto kind = random.coin() ? PathKind::line : PathKind::circle;
     const auto path = random_path(random, kind, 0.9 * p.feedforward_curvature_bound());
@@ -205,7 +205,7 @@ TEST(SteeringGovernor, GovernedLawConvergesFromFarAway) {
                  " A=" + std::to_string(g.max_steering_acceleration_radps2) +
                  " path=" + to_string(kind) + " v=" + std::to_string(speed));
     LeadWheelController controller(p, path);
-    const KinematicSingleTrack plant{p.vehicle_wheelbase_m};
+    const KinematicSingleTrack plant{p.chain.vehicle_wheelbase_m};
     Pose2 pose = start;
     const double dt = 0.02;
     ControllerOutput out;

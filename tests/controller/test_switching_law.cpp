@@ -19,18 +19,18 @@ using testing::seed_message;
 
 TEST(SwitchingLaw, GlobalSignEqualsPaperSignInsideItsDomain) {
   ControllerParameters parameters;
-  parameters.boundary_layer = 0.0;  // the pure sign law
+  parameters.law.boundary_layer = 0.0;  // the pure sign law
   for (int c = 0; c < property_cases(2000); ++c) {
     const auto seed = case_seed(c);
     Random random(seed);
     const double kbar = random.uniform(0.01, 2.0);
-    parameters.k_rob = random.uniform(0.0, 0.95);
-    const double effective = (1.0 - parameters.k_rob) * kbar;
+    parameters.law.k_rob = random.uniform(0.0, 0.95);
+    const double effective = (1.0 - parameters.law.k_rob) * kbar;
     const double e = random.uniform(-1.0, 1.0) / effective * 0.999;
     const double psi = random.uniform(-0.499, 0.499) * pi;  // cos(psi) > 0
-    const double paper = paper_sliding_variable(e, psi, kbar, parameters.k_rob);
+    const double paper = paper_sliding_variable(e, psi, kbar, parameters.law.k_rob);
     if (std::abs(paper) < 1e-9) continue;
-    parameters.surface = SlidingSurface::global;
+    parameters.law.surface = SlidingSurface::global;
     const SwitchingResult global = dubins_switching_law(e, psi, kbar, parameters);
     EXPECT_EQ(sign(global.curvature), sign(paper))
         << seed_message(seed) << " e=" << e << " psi=" << psi << " kbar=" << kbar;

@@ -40,69 +40,69 @@ TEST(ParameterValidation, DefaultsAreValid) {
 
 TEST(ParameterValidation, RejectsEachInvalidField) {
   ControllerParameters p;
-  p.order = -1;
+  p.chain.order = -1;
   expect_rejected(p, "order = -1", "[0, 8]");
   p = {};
-  p.order = 9;
+  p.chain.order = 9;
   expect_rejected(p, "order = 9", "[0, 8]");
   p = {};
-  p.vehicle_wheelbase_m = 0.0;
+  p.chain.vehicle_wheelbase_m = 0.0;
   expect_rejected(p, "vehicle_wheelbase_m = 0", "> 0");
   p = {};
-  p.vehicle_wheelbase_m = nan;
+  p.chain.vehicle_wheelbase_m = nan;
   expect_rejected(p, "vehicle_wheelbase_m = nan", "finite");
   p = {};
-  p.wheelbases_m[0] = -2.5;
+  p.chain.wheelbases_m[0] = -2.5;
   expect_rejected(p, "wheelbases_m[0] (lambda_1) = -2.5", "> 0");
   p = {};
-  p.wheelbases_m[1] = 2.7;
+  p.chain.wheelbases_m[1] = 2.7;
   expect_rejected(p, "wheelbases_m[1] (lambda_2) = 2.7", "lambda_l < lambda_veh");
   p = {};
-  p.lead_curvature_bound = -0.1;
+  p.chain.lead_curvature_bound = -0.1;
   expect_rejected(p, "lead_curvature_bound = -0.1", "> 0");
   p = {};
-  p.k_rob = 1.0;
+  p.law.k_rob = 1.0;
   expect_rejected(p, "k_rob = 1", "[0, 1)");
   p = {};
-  p.k_rob = 3.0;  // the paper's printed value (paper_notes §5)
+  p.law.k_rob = 3.0;  // the paper's printed value (paper_notes §5)
   expect_rejected(p, "k_rob = 3", "[0, 1)");
   p = {};
-  p.k_rob = -0.1;
+  p.law.k_rob = -0.1;
   expect_rejected(p, "k_rob = -0.1", "[0, 1)");
   p = {};
-  p.actuator_delay_s = -0.1;
+  p.delay_compensation.actuator_delay_s = -0.1;
   expect_rejected(p, "actuator_delay_s = -0.1", "[0, 1] s");
   p = {};
-  p.actuator_delay_s = 2.0;
+  p.delay_compensation.actuator_delay_s = 2.0;
   expect_rejected(p, "actuator_delay_s = 2", "[0, 1] s");
   p = {};
-  p.feedforward_catch_up = 1.5;
+  p.feedforward.catch_up = 1.5;
   expect_rejected(p, "feedforward_catch_up = 1.5", "[0, 1]");
   p = {};
-  p.feedforward_catch_up = std::numeric_limits<double>::quiet_NaN();
+  p.feedforward.catch_up = std::numeric_limits<double>::quiet_NaN();
   expect_rejected(p, "feedforward_catch_up = nan", "[0, 1]");
   p = {};
-  p.curvature_preview = CurvaturePreview::planned_jumps;  // default target rear_axle
+  p.feedforward.curvature_preview = CurvaturePreview::planned_jumps;  // default target rear_axle
   expect_rejected(p, "curvature_preview (1 = planned_jumps) = 1",
                   "cornering_target rear_axle_exact");
-  p.cornering_target = CorneringTarget::rear_axle_exact;
-  p.order = 3;
+  p.feedforward.cornering_target = CorneringTarget::rear_axle_exact;
+  p.chain.order = 3;
   expect_rejected(p, "curvature_preview (1 = planned_jumps) = 1", "order 1 or 2");
-  p.order = 2;
-  p.feedforward_curvature_rate = inf;
+  p.chain.order = 2;
+  p.feedforward.curvature_rate = inf;
   expect_rejected(p, "curvature_preview (1 = planned_jumps) = 1",
                   "finite feedforward_curvature_rate > 0");
   p = {};
-  p.boundary_layer = -0.01;
+  p.law.boundary_layer = -0.01;
   expect_rejected(p, "boundary_layer = -0.01", ">= 0");
   p = {};
-  p.approach_angle_rad = 2.0;
+  p.law.approach_angle_rad = 2.0;
   expect_rejected(p, "approach_angle_rad = 2", "(0, pi/2]");
   p = {};
-  p.lead_curvature_bound = 1.5;  // kbar_2 lambda_2 = 1.5 >= 1
+  p.chain.lead_curvature_bound = 1.5;  // kbar_2 lambda_2 = 1.5 >= 1
   expect_rejected(p, "kbar_2 * lambda_2 = 1.5", "must be < 1");
   p = {};
-  p.lead_curvature_bound = 0.9;  // kbar_2 lambda_2 = 0.9, kbar_1 = 2.06, kbar_1 lambda_1 > 1
+  p.chain.lead_curvature_bound = 0.9;  // kbar_2 lambda_2 = 0.9, kbar_1 = 2.06, kbar_1 lambda_1 > 1
   expect_rejected(p, "kbar_1 * lambda_1", "must be < 1");
 }
 
@@ -110,38 +110,38 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
 // name no enumerator were accepted.
 TEST(ParameterValidation, RejectsValuesThatBreakTheArithmetic) {
   ControllerParameters p;
-  p.wheelbases_m[0] = 1e-308;
+  p.chain.wheelbases_m[0] = 1e-308;
   expect_rejected(p, "wheelbases_m[0] (lambda_1) = 1e-308", "[0.01, 100] m");
   p = {};
-  p.wheelbases_m[1] = 1e-308;
+  p.chain.wheelbases_m[1] = 1e-308;
   expect_rejected(p, "wheelbases_m[1] (lambda_2) = 1e-308", "[0.01, 100] m");
   p = {};
-  p.max_substep_fraction = 1e-308;
+  p.chain.max_substep_fraction = 1e-308;
   expect_rejected(p, "max_substep_fraction = 1e-308", "min_substep_m = 0.001 m");
   p = {};
-  p.max_substep_fraction = 0.005;  // 0.005 * lambda_2 = 0.005 m: fine
+  p.chain.max_substep_fraction = 0.005;  // 0.005 * lambda_2 = 0.005 m: fine
   EXPECT_NO_THROW(p.validate());
-  p.wheelbases_m[1] = 0.1;  // 0.0005 m
+  p.chain.wheelbases_m[1] = 0.1;  // 0.0005 m
   expect_rejected(p, "max_substep_fraction = 0.005", "shortest wheelbase 0.1");
   p = {};
-  p.vehicle_wheelbase_m = 1e308;
+  p.chain.vehicle_wheelbase_m = 1e308;
   expect_rejected(p, "vehicle_wheelbase_m = 1e+308", "[0.01, 100] m");
   p = {};
-  p.surface = static_cast<SlidingSurface>(7);
+  p.law.surface = static_cast<SlidingSurface>(7);
   expect_rejected(p, "surface = 7", "0 (global) or 1 (paper)");
   p = {};
-  p.cornering_target = static_cast<CorneringTarget>(-3);
+  p.feedforward.cornering_target = static_cast<CorneringTarget>(-3);
   expect_rejected(p, "cornering_target = -3", "2 (lead_wheel)");
   p = {};
-  p.curvature_preview = static_cast<CurvaturePreview>(2);
+  p.feedforward.curvature_preview = static_cast<CurvaturePreview>(2);
   expect_rejected(p, "curvature_preview = 2", "1 (planned_jumps)");
 }
 
 // The shortest legal sub-step at the fastest, longest legal period: the count fits an int.
 TEST(InputValidation, LongestPeriodAtTheShortestSubStepIsFinite) {
   ControllerParameters p;
-  p.wheelbases_m[1] = 0.01;      // ControllerParameters::min_wheelbase_m
-  p.max_substep_fraction = 0.1;  // 0.001 m: ControllerParameters::min_substep_m
+  p.chain.wheelbases_m[1] = 0.01;      // ControllerParameters::min_wheelbase_m
+  p.chain.max_substep_fraction = 0.1;  // 0.001 m: ControllerParameters::min_substep_m
   LeadWheelController controller(p, line());
   ControllerOutput output;
   const ControllerInput fastest{{0.0, 3.0},

@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
-"""Fails when a field of ControllerParameters or of its SteeringGovernor group
-(include/smoothsteer/controller/controller_parameters.hpp) is missing from the parameter table
-of docs/controller.md, or when the table names a field the header does not have.
+"""Fails when a member of a group of ControllerParameters
+(include/smoothsteer/controller/controller_parameters.hpp: chain, law, feedforward, the optional
+compensations, governor) is missing from the member column of docs/controller.md's parameter
+table, or when the table names a member the header does not have. The table itself is generated
+from the field table (parameter_fields.cpp) and compared by ParameterFields.DocsTableIsTheFieldTable,
+so a member missing here is one the field table lacks. The groups' `enabled` switches are not
+fields of the table (the flat fields switch them), except the governor's.
 
 Usage: check_parameter_table.py [source_dir]"""
 import re
@@ -36,34 +40,50 @@ def data_members(body):
     return names
 
 
-def table_fields(markdown):
+def table_members(markdown):
     section = markdown.split("## Parameters (`ControllerParameters`", 1)
     if len(section) < 2:
         raise SystemExit("docs/controller.md has no '## Parameters (`ControllerParameters`' section")
-    body = section[1].split("\n## ", 1)[0]
-    fields = set()
-    for line in body.splitlines():
-        match = re.match(r"\|\s*`([a-z0-9_.]+)", line)
+    body = section[1].split("<!-- parameter table: generated from parameter_fields.cpp -->", 1)
+    if len(body) < 2:
+        raise SystemExit("docs/controller.md has no generated parameter table")
+    table = body[1].split("<!-- end of parameter table -->", 1)[0]
+    members = set()
+    for line in table.splitlines():
+        match = re.match(r"\|\s*`[^`]+`\s*\|\s*`([a-z0-9_.]+)`", line)
         if match:
-            fields.add(match.group(1))
-    return fields
+            members.add(match.group(1))
+    return members
+
+
+GROUPS = {"chain": "ChainParameters", "law": "SwitchingLawParameters",
+          "feedforward": "FeedforwardParameters", "delay_compensation": "DelayCompensation",
+          "single_track": "SingleTrackInversion", "disturbance_estimation": "DisturbanceEstimation",
+          "friction_guard": "FrictionGuard", "actuator_inversion": "ActuatorInversion",
+          "governor": "SteeringGovernor"}
 
 
 def main():
     root = Path(sys.argv[1] if len(sys.argv) > 1 else Path(__file__).resolve().parents[2])
     header = (root / "include/smoothsteer/controller/controller_parameters.hpp").read_text()
-    expected = set(data_members(struct_body(header, "ControllerParameters")))
-    # The governor group is listed field by field as governor.<field>.
-    expected.discard("governor")
-    expected |= {"governor." + f for f in data_members(struct_body(header, "SteeringGovernor"))}
-    documented = table_fields((root / "docs/controller.md").read_text())
+    groups = data_members(struct_body(header, "ControllerParameters"))
+    if set(groups) != set(GROUPS):
+        print(f"controller_parameters.hpp: groups {sorted(groups)}, expected {sorted(GROUPS)}")
+        return 1
+    expected = set()
+    for group, struct in GROUPS.items():
+        for member in data_members(struct_body(header, struct)):
+            if member == "enabled" and group != "governor":
+                continue
+            expected.add(f"{group}.{member}")
+    documented = table_members((root / "docs/controller.md").read_text())
     missing = sorted(expected - documented)
     unknown = sorted(documented - expected)
     for name in missing:
-        print(f"docs/controller.md: field '{name}' of controller_parameters.hpp is not in the table")
+        print(f"docs/controller.md: member '{name}' of controller_parameters.hpp is not in the table")
     for name in unknown:
         print(f"docs/controller.md: the table names '{name}', which controller_parameters.hpp lacks")
-    print(f"parameter table: {len(expected)} fields in the header, {len(documented)} in the table")
+    print(f"parameter table: {len(expected)} members in the header, {len(documented)} in the table")
     return 1 if missing or unknown else 0
 
 

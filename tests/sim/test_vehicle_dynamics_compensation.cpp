@@ -124,7 +124,8 @@ TEST(ActuatorInversion, TheActuatorReproducesTheChainAngle) {
   a.max_rate_radps = 10.0;
   const double lag = 1.0 / a.pole_radps();
   ControllerParameters inverted = p;
-  inverted.actuator_time_constant_s = lag;
+  inverted.actuator_inversion.time_constant_s = lag;
+  inverted.actuator_inversion.enabled = lag > 0.0;
   // Poses of a closed loop of the plain controller on the kinematic model.
   LeadWheelController plain(p, path);
   KinematicVehicleModel model(car);
@@ -193,8 +194,8 @@ TEST(FrictionGuard, TheCommandNeverAsksMoreThanTheLimit) {
     auto path = std::make_shared<const Path>(
         PathBuilder({0, 0}, 0.0).line(10).arc(radius, random.coin() ? pi : -pi).build());
     ControllerParameters p = ControllerParameters::paper_c1(car.wheelbase_m(), 0.8, 0.2, 0.3);
-    p.feedforward_share = 0.6;
-    p.max_lateral_acceleration_mps2 = limit;
+    p.feedforward.share = 0.6;
+    p.friction_guard = {.enabled = std::isfinite(limit), .max_lateral_acceleration_mps2 = limit};
     LeadWheelController controller(p, path);
     KinematicVehicleModel model(car);
     SimulationParameters sim;
@@ -224,27 +225,27 @@ TEST(VehicleDynamicsValidation, EveryNewParameterIsNamed) {
     return p.validation_error();
   };
   EXPECT_NE(controller_error([](ControllerParameters& p) {
-              p.preview_time_s = -1;
+              p.single_track.preview_time_s = -1;
             }).find("preview_time_s"),
             std::string::npos);
   EXPECT_NE(controller_error([](ControllerParameters& p) {
-              p.rear_slip_gradient_s2pm = 1;
+              p.single_track.rear_slip_gradient_s2pm = 1;
             }).find("rear_slip_gradient_s2pm"),
             std::string::npos);
   EXPECT_NE(controller_error([](ControllerParameters& p) {
-              p.front_slip_gradient_s2pm = -0.01;
+              p.single_track.front_slip_gradient_s2pm = -0.01;
             }).find("front_slip_gradient_s2pm"),
             std::string::npos);
   EXPECT_NE(controller_error([](ControllerParameters& p) {
-              p.max_lateral_acceleration_mps2 = 0;
+              p.friction_guard.max_lateral_acceleration_mps2 = 0;
             }).find("max_lateral_acceleration_mps2"),
             std::string::npos);
   EXPECT_NE(controller_error([](ControllerParameters& p) {
-              p.actuator_time_constant_s = 1;
+              p.actuator_inversion.time_constant_s = 1;
             }).find("actuator_time_constant_s"),
             std::string::npos);
   EXPECT_NE(controller_error([](ControllerParameters& p) {
-              p.actuator_lag_count = 4;
+              p.actuator_inversion.lag_count = 4;
             }).find("actuator_lag_count"),
             std::string::npos);
   SideSlipObserverParameters observer;
@@ -301,14 +302,14 @@ TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndRemovesTheOffset) {
     // eq. cornering_constr), where the defaults left 32 and 53 cm at 0.9 k_rob kbar.
     ControllerParameters p = ControllerParameters::paper_c1(car.wheelbase_m(), 1.0, 0.1, 0.3);
     if (random.coin()) {
-      p.order = 3;
-      p.wheelbases_m[1] = 0.8;
-      p.wheelbases_m[2] = 0.6;
-      p.wheelbases_m[0] = cornering_front_wheelbase(car.wheelbase_m(), 0.8 * 0.8 + 0.6 * 0.6);
+      p.chain.order = 3;
+      p.chain.wheelbases_m[1] = 0.8;
+      p.chain.wheelbases_m[2] = 0.6;
+      p.chain.wheelbases_m[0] = cornering_front_wheelbase(car.wheelbase_m(), 0.8 * 0.8 + 0.6 * 0.6);
     }
-    p.feedforward_share = 0.6;
-    p.feedforward_curvature_rate = 0.01;
-    p.cornering_target = CorneringTarget::rear_axle;
+    p.feedforward.share = 0.6;
+    p.feedforward.curvature_rate = 0.01;
+    p.feedforward.cornering_target = CorneringTarget::rear_axle;
     const double disturbance =
         (random.coin() ? 1.0 : -1.0) * random.uniform(0.2, 0.9) * p.switching_curvature_bound();
     const double speed = random.uniform(3.0, 8.0);
@@ -317,7 +318,8 @@ TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndRemovesTheOffset) {
     };
     auto run_with = [&](double estimation_length) {
       ControllerParameters q = p;
-      q.disturbance_estimation_length_m = estimation_length;
+      q.disturbance_estimation = {.enabled = estimation_length > 0.0,
+                                  .length_m = estimation_length};
       LeadWheelController controller(q, path);
       KinematicVehicleModel model(car);
       SimulationParameters sim;
@@ -335,7 +337,7 @@ TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndRemovesTheOffset) {
     const Outcome without = run_with(0.0);
     const Outcome with = run_with(5.0);
     const std::string inputs = "kappa_d " + std::to_string(disturbance) + " n " +
-                               std::to_string(p.order) + (circle ? " circle R " : " line ") +
+                               std::to_string(p.chain.order) + (circle ? " circle R " : " line ") +
                                std::to_string(radius) + " v " + std::to_string(speed) + "; " +
                                testing::seed_message(seed);
     EXPECT_NEAR(with.estimate, disturbance, 0.03 * std::abs(disturbance)) << inputs;

@@ -19,35 +19,36 @@ namespace smoothsteer::testing {
 //! Random valid parameters of order n whose real steering-angle bound is `steering_bound`.
 inline ControllerParameters random_parameters(Random& random, int order, double steering_bound) {
   ControllerParameters p;
-  p.order = order;
-  p.vehicle_wheelbase_m = random.uniform(2.0, 4.0);
-  p.k_rob = random.uniform(0.2, 0.6);
+  p.chain.order = order;
+  p.chain.vehicle_wheelbase_m = random.uniform(2.0, 4.0);
+  p.law.k_rob = random.uniform(0.2, 0.6);
   for (int i = 0; i < order; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    p.wheelbases_m[k] = i == 0 ? random.uniform(0.6, 1.0) * p.vehicle_wheelbase_m
-                               : random.uniform(0.15, 0.8) * p.vehicle_wheelbase_m;
+    p.chain.wheelbases_m[k] = i == 0 ? random.uniform(0.6, 1.0) * p.chain.vehicle_wheelbase_m
+                                     : random.uniform(0.15, 0.8) * p.chain.vehicle_wheelbase_m;
   }
   // Bisection on kbar_n such that atan(lambda_veh kbar_0) = steering_bound.
   double low = 0.0;
-  double high = order > 0 ? 1.0 / p.wheelbases_m[static_cast<std::size_t>(order - 1)] : 10.0;
+  double high = order > 0 ? 1.0 / p.chain.wheelbases_m[static_cast<std::size_t>(order - 1)] : 10.0;
   for (int iteration = 0; iteration < 200; ++iteration) {
-    p.lead_curvature_bound = 0.5 * (low + high);
+    p.chain.lead_curvature_bound = 0.5 * (low + high);
     const bool valid = p.validation_error().empty();
     if (valid && compute_chain_bounds(p).steering_angle_rad < steering_bound) {
-      low = p.lead_curvature_bound;
+      low = p.chain.lead_curvature_bound;
     } else {
-      high = p.lead_curvature_bound;
+      high = p.chain.lead_curvature_bound;
     }
   }
-  p.lead_curvature_bound = low;
+  p.chain.lead_curvature_bound = low;
   return p;
 }
 
 inline std::string describe(const ControllerParameters& p) {
   std::ostringstream text;
-  text << "n=" << p.order << " lambda_veh=" << p.vehicle_wheelbase_m
-       << " kbar_n=" << p.lead_curvature_bound << " k_rob=" << p.k_rob << " wheelbases=[";
-  for (int i = 0; i < p.order; ++i) text << p.wheelbases_m[static_cast<std::size_t>(i)] << ' ';
+  text << "n=" << p.chain.order << " lambda_veh=" << p.chain.vehicle_wheelbase_m
+       << " kbar_n=" << p.chain.lead_curvature_bound << " k_rob=" << p.law.k_rob << " wheelbases=[";
+  for (int i = 0; i < p.chain.order; ++i)
+    text << p.chain.wheelbases_m[static_cast<std::size_t>(i)] << ' ';
   text << ']';
   return text.str();
 }

@@ -22,7 +22,7 @@ std::shared_ptr<const Path> circle() {
 
 ControllerParameters car_parameters(const VehicleParameters& vehicle) {
   ControllerParameters p;
-  p.vehicle_wheelbase_m = vehicle.wheelbase_m();
+  p.chain.vehicle_wheelbase_m = vehicle.wheelbase_m();
   return p;
 }
 
@@ -64,14 +64,14 @@ TEST(SteeringSystemConstruction, InvalidInputsNameTheField) {
             }).find("SteeringSystemParameters: slip_input = 7"),
             std::string::npos);
   ControllerParameters wrong_wheelbase;
-  wrong_wheelbase.vehicle_wheelbase_m = 2.7;
+  wrong_wheelbase.chain.vehicle_wheelbase_m = 2.7;
   EXPECT_EQ(message_of([&] { SteeringSystem s(vehicle, wrong_wheelbase, circle()); }),
             "ControllerParameters: vehicle_wheelbase_m = 2.7 must be the vehicle's wheelbase lf + "
             "lr = 2.578");
   EXPECT_EQ(message_of([&] { SteeringSystem s(vehicle, car_parameters(vehicle), nullptr); }),
             "SteeringSystem: path is null; a path is required");
   ControllerParameters bad_k_rob = car_parameters(vehicle);
-  bad_k_rob.k_rob = 1.5;
+  bad_k_rob.law.k_rob = 1.5;
   EXPECT_NE(message_of([&] { SteeringSystem s(vehicle, bad_k_rob, circle()); }).find("k_rob = 1.5"),
             std::string::npos);
 }
@@ -125,17 +125,17 @@ TEST(SteeringSystemConstruction, TheCarDeterminesItsFields) {
   SteeringSystemOptions options;
   options.friction_guard = true;
   const ControllerParameters p = steering_system_controller(car, options);
-  EXPECT_EQ(p.vehicle_wheelbase_m, car.vehicle.wheelbase_m());
-  EXPECT_EQ(p.rear_slip_gradient_s2pm, car.vehicle.rear_slip_gradient());
-  EXPECT_EQ(p.front_slip_gradient_s2pm, car.vehicle.front_slip_gradient());
-  EXPECT_EQ(p.max_lateral_acceleration_mps2, car.vehicle.friction_limit_mps2());
+  EXPECT_EQ(p.chain.vehicle_wheelbase_m, car.vehicle.wheelbase_m());
+  EXPECT_EQ(p.single_track.rear_slip_gradient_s2pm, car.vehicle.rear_slip_gradient());
+  EXPECT_EQ(p.single_track.front_slip_gradient_s2pm, car.vehicle.front_slip_gradient());
+  EXPECT_EQ(p.friction_guard.max_lateral_acceleration_mps2, car.vehicle.friction_limit_mps2());
   EXPECT_EQ(p.governor.max_steering_rate_radps, car.vehicle.max_steering_rate_radps);
   // 10 Hz third-order low-pass: w_p = 123.2 rad/s, three lags delay by 24.3 ms.
-  EXPECT_NEAR(p.actuator_delay_s, 0.01 + 0.02435, 1e-4);
+  EXPECT_NEAR(p.delay_compensation.actuator_delay_s, 0.01 + 0.02435, 1e-4);
   options.actuator_delay_s = 0.048;
   options.slip_preview = false;
-  EXPECT_EQ(steering_system_controller(car, options).actuator_delay_s, 0.048);
-  EXPECT_EQ(steering_system_controller(car, options).rear_slip_gradient_s2pm, 0.0);
+  EXPECT_EQ(steering_system_controller(car, options).delay_compensation.actuator_delay_s, 0.048);
+  EXPECT_EQ(steering_system_controller(car, options).single_track.rear_slip_gradient_s2pm, 0.0);
 }
 
 SteeringSystemInput straight_input(double x) {
@@ -183,7 +183,7 @@ TEST(SteeringSystemUpdate, ActiveLimitsNameTheBindingBound) {
   const VehicleParameters vehicle;
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 500.0));
   ControllerParameters p = car_parameters(vehicle);
-  p.lead_curvature_bound = 0.1;
+  p.chain.lead_curvature_bound = 0.1;
   SteeringSystem system(vehicle, p, path, SlipInput::kinematic);
   SteeringSystemOutput out;
   // On the path: nothing binds.
@@ -201,7 +201,7 @@ TEST(SteeringSystemUpdate, ActiveLimitsNameTheBindingBound) {
             "lead_curvature|friction_guard");
   EXPECT_EQ(describe_active_limits(0), "none");
   // The friction guard: at 30 m/s with mu g = 1 m/s^2 the lead curvature is held to ~1/900.
-  p.max_lateral_acceleration_mps2 = 1.0;
+  p.friction_guard = {.enabled = true, .max_lateral_acceleration_mps2 = 1.0};
   SteeringSystem guarded(vehicle, p, path, SlipInput::kinematic);
   far.speed_mps = 30.0;
   for (int k = 0; k < 5; ++k) ASSERT_EQ(guarded.update(far, out), Status::ok);

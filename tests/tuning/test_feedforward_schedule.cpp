@@ -118,8 +118,8 @@ TEST(FeedforwardSchedule, ScheduleCsvRoundTripKeepsTheFeedforward) {
   const GainSchedule schedule =
       compute_feedforward_schedule(car, options, speed_grid(1.0, 10.0, 1.0));
   const ControllerParameters p = schedule.parameters_at(4.5);
-  EXPECT_GT(p.feedforward_share, 0.0);
-  EXPECT_TRUE(std::isfinite(p.feedforward_curvature_rate));
+  EXPECT_GT(p.feedforward.share, 0.0);
+  EXPECT_TRUE(std::isfinite(p.feedforward.curvature_rate));
   EXPECT_NEAR(p.feedforward_curvature_bound(), 0.02, 1e-12);
 }
 
@@ -133,7 +133,7 @@ TEST(FeedforwardSchedule, ParametersForYourCarHoldAtEveryLowerSpeed) {
   path.path_curvature_bound = 1.0 / 40.0;
   path.path_curvature_rate_bound = 0.005;
   const ControllerParameters p = parameters_for_vehicle(car, 15.0, path);
-  EXPECT_DOUBLE_EQ(p.vehicle_wheelbase_m, 2.9);
+  EXPECT_DOUBLE_EQ(p.chain.vehicle_wheelbase_m, 2.9);
   EXPECT_NEAR(p.feedforward_curvature_bound(), 1.0 / 40.0, 1e-12);
   for (const double v : {0.5, 5.0, 10.0, 15.0}) expect_certified(car, p, v, 0.0);
   EXPECT_THROW(parameters_for_vehicle(car, 80.0, path), InfeasibleLimits);

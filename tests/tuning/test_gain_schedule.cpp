@@ -225,8 +225,9 @@ TEST(GainSchedule, InterpolationIsContinuousAndConservative) {
   for (double v = 0.0; v <= 30.0; v += 0.001) {
     const ControllerParameters p = s.parameters_at(v);
     ASSERT_TRUE(p.is_valid()) << "v=" << v;
-    const double jump = std::abs(p.lead_curvature_bound - previous.lead_curvature_bound) +
-                        std::abs(p.wheelbases_m[1] - previous.wheelbases_m[1]);
+    const double jump =
+        std::abs(p.chain.lead_curvature_bound - previous.chain.lead_curvature_bound) +
+        std::abs(p.chain.wheelbases_m[1] - previous.chain.wheelbases_m[1]);
     ASSERT_LT(jump, 0.01) << "v=" << v;
     previous = p;
   }
@@ -245,13 +246,13 @@ TEST(ControllerParameters, IsValidAgreesWithValidationError) {
   for (int k = 0; k < property_cases(400); ++k) {
     Random random(case_seed(k) + 23);
     ControllerParameters p;
-    p.order = random.integer(-1, 9);
-    p.vehicle_wheelbase_m = random.coin() ? random.uniform(-1.0, 4.0) : 2.7;
-    for (double& l : p.wheelbases_m) l = random.uniform(-0.5, 4.0);
-    p.lead_curvature_bound = random.uniform(-0.1, 1.5);
-    p.k_rob = random.uniform(-0.2, 1.2);
-    if (random.integer(0, 9) == 0) p.approach_angle_rad = random.uniform(-1.0, 2.0);
-    if (random.integer(0, 9) == 0) p.lead_curvature_bound = std::nan("");
+    p.chain.order = random.integer(-1, 9);
+    p.chain.vehicle_wheelbase_m = random.coin() ? random.uniform(-1.0, 4.0) : 2.7;
+    for (double& l : p.chain.wheelbases_m) l = random.uniform(-0.5, 4.0);
+    p.chain.lead_curvature_bound = random.uniform(-0.1, 1.5);
+    p.law.k_rob = random.uniform(-0.2, 1.2);
+    if (random.integer(0, 9) == 0) p.law.approach_angle_rad = random.uniform(-1.0, 2.0);
+    if (random.integer(0, 9) == 0) p.chain.lead_curvature_bound = std::nan("");
     EXPECT_EQ(p.is_valid(), p.validation_error().empty())
         << seed_message(case_seed(k)) << " " << p.validation_error();
   }

@@ -42,7 +42,8 @@ TEST(LeadCurvatureRateDemand, TheTunerCoversItWhereTheBudgetAllows) {
   const ScheduleEntry& e = b.entries().front();
   // At 3 m/s the rate budget is ample: L_ff covers the lead wheel's demand with its margin.
   const ControllerParameters p = b.parameters_at(3.0);
-  const double demand = lead_curvature_rate_demand(*path, p.wheelbases_m.data(), p.order);
+  const double demand =
+      lead_curvature_rate_demand(*path, p.chain.wheelbases_m.data(), p.chain.order);
   EXPECT_GT(demand, bounds_only.path_curvature_rate_bound);
   EXPECT_NEAR(e.feedforward_curvature_rate, with_path.feedforward_rate_margin * demand,
               1e-9 + 0.2 * demand);

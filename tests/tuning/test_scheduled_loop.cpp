@@ -206,17 +206,17 @@ TEST(Retune, KeepsSteeringContinuousAndRejectsBadParameters) {
     ASSERT_EQ(controller.retune(b), Status::ok);
     // b's set is at least as large (kbar grows, eq. kappalmax is independent of lambda_l).
     EXPECT_NEAR(controller.vehicle_steering_angle(controller.chain_angles()[0]), before, 1e-12);
-    EXPECT_EQ(controller.parameters().wheelbases_m[1], b.wheelbases_m[1]);
+    EXPECT_EQ(controller.parameters().chain.wheelbases_m[1], b.chain.wheelbases_m[1]);
     for (int i = 0; i < 2; ++i) {
       EXPECT_LE(std::abs(controller.chain_angles()[i]), controller.bounds().angle[i] * (1 + 1e-15));
     }
     ControllerParameters bad = b;
-    bad.lead_curvature_bound = std::nan("");
+    bad.chain.lead_curvature_bound = std::nan("");
     EXPECT_EQ(controller.retune(bad), Status::invalid_input);
     bad = b;
-    bad.order = 3;
+    bad.chain.order = 3;
     EXPECT_EQ(controller.retune(bad), Status::invalid_input);
-    EXPECT_EQ(controller.parameters().lead_curvature_bound, b.lead_curvature_bound);
+    EXPECT_EQ(controller.parameters().chain.lead_curvature_bound, b.chain.lead_curvature_bound);
   }
 }
 

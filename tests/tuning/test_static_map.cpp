@@ -28,7 +28,7 @@ TEST(InvariantBounds, CorrectedKappalmaxForSecondOrder) {
     const double lead = random.uniform(0.05, 0.95) * vehicle;
     const double real_bound = random.uniform(0.1, 1.4);
     ControllerParameters p = ControllerParameters::paper_c1(vehicle, lead, 0.01, 0.3);
-    const double lambda = p.wheelbases_m[0];
+    const double lambda = p.chain.wheelbases_m[0];
     const double fictive = std::atan(lambda * std::tan(real_bound) / vehicle);
     const double expected =
         std::sin(fictive) /
@@ -37,7 +37,7 @@ TEST(InvariantBounds, CorrectedKappalmaxForSecondOrder) {
     EXPECT_NEAR(kbar, expected, 1e-12 * expected);
     // With eq. (cornering_constr) the bound does not depend on lambda_l: sin(dbar) / lambda_veh.
     EXPECT_NEAR(kbar, std::sin(real_bound) / vehicle, 1e-12);
-    p.lead_curvature_bound = kbar;
+    p.chain.lead_curvature_bound = kbar;
     EXPECT_NEAR(compute_chain_bounds(p).steering_angle_rad, real_bound, 1e-12);
   }
 }
@@ -46,12 +46,12 @@ TEST(InvariantBounds, AnyOrderRoundTrip) {
   for (int k = 0; k < property_cases(40); ++k) {
     Random random(case_seed(k));
     ControllerParameters p;
-    p.order = random.integer(1, 6);
-    p.vehicle_wheelbase_m = random.uniform(1.5, 4.0);
-    for (int i = 0; i < p.order; ++i)
-      p.wheelbases_m[i] = random.uniform(0.2, 0.9) * p.vehicle_wheelbase_m;
+    p.chain.order = random.integer(1, 6);
+    p.chain.vehicle_wheelbase_m = random.uniform(1.5, 4.0);
+    for (int i = 0; i < p.chain.order; ++i)
+      p.chain.wheelbases_m[i] = random.uniform(0.2, 0.9) * p.chain.vehicle_wheelbase_m;
     const double bound = random.uniform(0.05, 1.45);
-    p.lead_curvature_bound = lead_curvature_bound_for_steering_angle(p, bound);
+    p.chain.lead_curvature_bound = lead_curvature_bound_for_steering_angle(p, bound);
     SCOPED_TRACE(seed_message(case_seed(k)));
     ASSERT_TRUE(p.validation_error().empty()) << p.validation_error();
     EXPECT_NEAR(steering_angle_bound(p), bound, 1e-11);
@@ -96,7 +96,7 @@ TEST(WorstCase, AgreesWithDenseGridAndChainBounds) {
     const ControllerParameters p = ControllerParameters::paper_c1(vehicle, lead, q / vehicle, 0.3);
     std::ostringstream text;
     text << seed_message(case_seed(k)) << " lambda_veh=" << vehicle << " lambda_l=" << lead
-         << " kbar_l=" << p.lead_curvature_bound;
+         << " kbar_l=" << p.chain.lead_curvature_bound;
     SCOPED_TRACE(text.str());
     const SteeringDerivatives worst = worst_case_steering_derivatives(p);
     const ChainBounds bounds = compute_chain_bounds(p);
@@ -110,9 +110,9 @@ TEST(WorstCase, AgreesWithDenseGridAndChainBounds) {
         delta[0] = bounds.angle[0] * (2.0 * i / samples - 1.0);
         delta[1] = bounds.angle[1] * (2.0 * j / samples - 1.0);
         for (double sign : {-1.0, 1.0}) {
-          dense = std::max(
-              dense, std::abs(vehicle_steering_derivatives(p, delta, sign * p.lead_curvature_bound)
-                                  .acceleration_per_meter2));
+          dense = std::max(dense, std::abs(vehicle_steering_derivatives(
+                                               p, delta, sign * p.chain.lead_curvature_bound)
+                                               .acceleration_per_meter2));
         }
       }
     }
@@ -133,9 +133,9 @@ TEST(StaticMap, NeverExceededByStatesInTheInvariantSets) {
         ControllerParameters::paper_c1(vehicle, lead, std::sin(angle) / vehicle, 0.3);
     std::ostringstream text;
     text << seed_message(case_seed(k)) << " lambda_veh=" << vehicle << " lambda_l=" << lead
-         << " kbar_l=" << p.lead_curvature_bound;
+         << " kbar_l=" << p.chain.lead_curvature_bound;
     SCOPED_TRACE(text.str());
-    const MapValue bound = map.lookup(vehicle, lead, p.lead_curvature_bound);
+    const MapValue bound = map.lookup(vehicle, lead, p.chain.lead_curvature_bound);
     const SteeringDerivatives exact = worst_case_steering_derivatives(p);
     EXPECT_GE(bound.rate, exact.rate_per_meter * (1.0 - 1e-9));
     EXPECT_GE(bound.acceleration, exact.acceleration_per_meter2 * (1.0 - 1e-9));
@@ -146,7 +146,7 @@ TEST(StaticMap, NeverExceededByStatesInTheInvariantSets) {
       delta[0] = random.uniform(-1.0, 1.0) * chain.angle[0];
       delta[1] = (random.coin() ? (random.coin() ? 1.0 : -1.0) : random.uniform(-1.0, 1.0)) *
                  chain.angle[1];
-      const double kappa = (random.coin() ? 1.0 : -1.0) * p.lead_curvature_bound;
+      const double kappa = (random.coin() ? 1.0 : -1.0) * p.chain.lead_curvature_bound;
       const SteeringDerivatives d = vehicle_steering_derivatives(p, delta, kappa);
       ASSERT_TRUE(std::isfinite(d.rate_per_meter) && std::isfinite(d.acceleration_per_meter2));
       ASSERT_LE(std::abs(d.rate_per_meter), bound.rate * (1.0 + 1e-12))

@@ -85,121 +85,168 @@ struct SteeringGovernor {
   double certified_switching_bound = 0.0;
 };
 
-struct ControllerParameters {
-  //! Largest supported chain length. Fixed-size storage keeps update() allocation free.
-  static constexpr int max_order = 8;
+//! Largest supported chain length. Fixed-size storage keeps update() allocation free.
+inline constexpr int max_chain_order = 8;
 
+//! The fictive trailer chain (paper Sec. II-C/D) and its integration.
+struct ChainParameters {
   //! n: number of fictive wheels in front of the rear axle. The steering angle is C^(n-1) and
   //! its n-th derivative is bounded. n = 0 is the original (chattering) Dubins-car law.
   int order = 2;
-  //! Range of lambda_veh and of every lambda_i [m]: no car-like chain has a wheel 1 cm from
-  //! the next or 100 m away.
-  static constexpr double min_wheelbase_m = 0.01;
-  static constexpr double max_wheelbase_m = 100.0;
   //! lambda_veh: wheelbase of the real vehicle [m].
   double vehicle_wheelbase_m = 2.7;
   //! lambda_1..lambda_n [m]. lambda_1 is the fictive wheelbase lambda (paper Sec. III item 3),
   //! lambda_n the lead wheelbase lambda_l (for n = 2). Only the first n entries are used.
-  std::array<double, max_order> wheelbases_m{2.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
+  std::array<double, max_chain_order> wheelbases_m{2.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
   //! kbar_n: curvature bound of the lead wheel [1/m] (eq. kappan). The bounds of the wheels
   //! behind it follow from the invariant sets (paper_notes §2).
   double lead_curvature_bound = 0.2;
+  //! Largest arc-length step [m] of the RK4 integration of the chain, relative to the shortest
+  //! wheelbase. A control period is split into at most max_substeps steps.
+  double max_substep_fraction = 0.1;
+  int max_substeps = 64;
+};
+
+//! The switching law on the lead wheel (paper eq. sigma, docs/global_convergence.md).
+struct SwitchingLawParameters {
+  SlidingSurface surface = SlidingSurface::global;
   //! k_rob in [0, 1): robustness margin of the switching law (eq. sigma) against matched
-  //! disturbances |kappa_d| <= k_rob kbar_sw, kbar_sw = (1 - feedforward_share) kbar_n: the
+  //! disturbances |kappa_d| <= k_rob kbar_sw, kbar_sw = (1 - feedforward.share) kbar_n: the
   //! switching part alone must cover them (docs/feedforward.md, section 4). With the paper's law
-  //! (feedforward_share = 0) that is k_rob kbar_n, and the path's curvature is such a
-  //! disturbance; with the default share 0.5 it is half of it.
+  //! (share = 0) that is k_rob kbar_n, and the path's curvature is such a disturbance; with the
+  //! default share 0.5 it is half of it.
   //! ClosedLoopProperties.MatchedDisturbanceIsRejected tests up to 0.95 of this bound.
   double k_rob = 0.3;
   //! psi_max in (0, pi/2]: heading relative to the path with which the lead wheel approaches
   //! from far away. pi/2 gives the Dubins turn-straight-turn.
   double approach_angle_rad = std::numbers::pi / 2.0;
-  //! Share of kbar_n given to the curvature feedforward, in [0, 1) (docs/feedforward.md):
-  //! kbar_ff = feedforward_share * kbar_n. The law is kappa_n = kappa_ff + kappa_sw, with kappa_ff
-  //! the curvature the lead wheel needs to stay on its target curve (exact Frenet form),
-  //! saturated at +-kbar_ff and rate limited, and kappa_sw the switching part with authority
-  //! kbar_sw = kbar_n - kbar_ff. |kappa_n| <= kbar_n, so the paper's invariant sets and angle
-  //! bounds hold unchanged. 0 is the paper's law (no feedforward): the path's curvature is then
-  //! a disturbance that k_rob must cover.
-  double feedforward_share = 0.5;
-  //! L_ff >= 0: largest |d kappa_ff / ds| per metre of rear-axle travel [1/m^2]. Finite values
-  //! make the steering rate and acceleration certificate of steering_certificate.hpp finite;
-  //! +inf lets the feedforward follow its target at once (then only the box bound holds).
-  double feedforward_curvature_rate = std::numeric_limits<double>::infinity();
-  //! Catch-up g in [0, 1] (docs/feedforward.md, section 4): where the rate limit L_ff holds
-  //! kappa_ff back from its target, the switching part adds up to g kbar_sw of the gap, inside
-  //! its own bound kbar_sw. kappa_sw stays in +-kbar_sw, so the certificate is unchanged, and the
-  //! residual that k_rob must cover never grows. 0 = off (kappa_ff alone follows its target).
-  double feedforward_catch_up = 0.0;
   //! epsilon >= 0: width of a boundary layer around the switching surface, in the units of the
   //! sliding variable (rad for the global law, m for the paper's). 0 is the paper's
   //! kappa_sw = kbar_sw sign(.); epsilon > 0 uses kbar_sw sat(./epsilon), which removes the
   //! discrete-time chattering of the command's acceleration at the cost of millimetres.
   //! |kappa_sw| <= kbar_sw either way, so every bound holds.
   double boundary_layer = 0.01;
-  //! Known delay [s] between the command and the steering it produces (dead time, plus the
-  //! group delay of the actuator's low-pass if desired); 0 = off. Beyond the paper (its outlook:
-  //! actuator compensation): the law acts on the pose predicted for the moment the new command
-  //! takes effect, integrated with the kinematic model from the measured pose and the commands
-  //! still in the pipe (a Smith predictor). At most max_actuator_delay_s.
-  double actuator_delay_s = 0.0;
-  static constexpr double max_actuator_delay_s = 1.0;
-  //! Dynamics inversion of the feedforward (docs/vehicle_dynamics.md, section 3). On the linear
-  //! single-track model with yaw inertia m lf lr the rear axle's course curvature kappa follows
-  //! the steering as delta = L kappa + (K_f - K_r) v^2 kappa + L (K_f + K_r) v^2 kappa'
-  //! + L K_f K_r v^4 kappa'' (' = d/ds), with the slip gradients K_r = m lf / (L Cr) and
-  //! K_f = m lr / (L Cf). The feedforward therefore aims the chain at g kappa(s + d) plus a
-  //! second-order correction, g = 1 + (K_f - K_r) v^2 / L, d = (K_f + K_r) v^2 / g, reading the
-  //! path d + preview_time_s |v| metres further ahead. The result still passes the clamp to
-  //! +-kbar_ff and the rate limit L_ff, so the certificate holds unchanged. 0 = off.
-  double preview_time_s = 0.0;  //!< [s], in [0, max_actuator_delay_s]
-  //! Disturbance estimation (docs/feedforward.md, "disturbances on the vehicle"): a curvature
-  //! the plant adds at the rear axle (understeer, a banked road, a steering offset) is estimated
-  //! as the measured course curvature minus the commanded one, low-passed over this distance [m],
-  //! and the feedforward aims the chain at the path's curvature minus it. The estimate enters
-  //! only through kappa_ff, so |kappa_ff| <= kbar_ff, its rate limit and the certificate hold.
-  //! 0 = off; else in [1, 1000] m.
-  double disturbance_estimation_length_m = 0.0;
-  double rear_slip_gradient_s2pm = 0.0;   //!< K_r [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
-  double front_slip_gradient_s2pm = 0.0;  //!< K_f [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
-  //! With the second-order term K_f K_r v^4 kappa'' of the single-track inversion (true), or
-  //! only its preview and gain (false). Near the friction limit the linear model over-corrects
-  //! with it (docs/vehicle_dynamics.md, section 3).
-  bool slip_preview_second_order = true;
-  static constexpr double max_slip_gradient_s2pm = 0.1;  //!< bound of K_r and K_f
-  //! Friction guard (docs/vehicle_dynamics.md): at speed v the lead wheel's curvature stays
-  //! within the curvature whose stationary rear-axle curvature is a_max / v^2, so the car never
-  //! asks more than a_max of its tires once the chain is stationary. kappa_ff moves into the
-  //! shrunken range at its rate limit L_ff; kappa_sw is clipped. +inf = off.
-  double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();
-  //! Steering-actuator inversion (paper Outlook; Klauer et al. 2020): for an actuator of
-  //! `actuator_lag_count` equal first-order lags with time constant T, (1 + T s)^m, the command
-  //! is delta + a1 delta' + ... with a_k = C(m, k) T^k, using the chain's derivatives up to
-  //! order n - 1 so that the command keeps a certified rate bound (docs/vehicle_dynamics.md).
-  //! 0 = off. The dead time is the Smith predictor's (actuator_delay_s).
-  double actuator_time_constant_s = 0.0;  //!< T = 1 / pole [s], in [0, 0.5]
-  int actuator_lag_count = 3;             //!< m, in [1, 3]
-  //! kbar_ff = feedforward_share * kbar_n [1/m].
-  double feedforward_curvature_bound() const noexcept {
-    return feedforward_share * lead_curvature_bound;
-  }
-  //! kbar_sw = kbar_n - kbar_ff [1/m]: authority of the switching part.
-  double switching_curvature_bound() const noexcept {
-    return (1.0 - feedforward_share) * lead_curvature_bound;
-  }
-  //! Off by default: the split certificate of steering_certificate.hpp alone.
-  SteeringGovernor governor{};
-  SlidingSurface surface = SlidingSurface::global;
+};
+
+//! The curvature feedforward (docs/feedforward.md): kappa_n = kappa_ff + kappa_sw.
+struct FeedforwardParameters {
+  //! Share of kbar_n given to the curvature feedforward, in [0, 1): kbar_ff = share * kbar_n.
+  //! kappa_ff is the curvature the lead wheel needs to stay on its target curve (exact Frenet
+  //! form), saturated at +-kbar_ff and rate limited, and kappa_sw the switching part with
+  //! authority kbar_sw = kbar_n - kbar_ff. |kappa_n| <= kbar_n, so the paper's invariant sets and
+  //! angle bounds hold unchanged. 0 is the paper's law (no feedforward): the path's curvature is
+  //! then a disturbance that k_rob must cover.
+  double share = 0.5;
+  //! L_ff >= 0: largest |d kappa_ff / ds| per metre of rear-axle travel [1/m^2]. Finite values
+  //! make the steering rate and acceleration certificate of steering_certificate.hpp finite;
+  //! +inf lets the feedforward follow its target at once (then only the box bound holds).
+  double curvature_rate = std::numeric_limits<double>::infinity();
+  //! Catch-up g in [0, 1] (docs/feedforward.md, section 4): where the rate limit L_ff holds
+  //! kappa_ff back from its target, the switching part adds up to g kbar_sw of the gap, inside
+  //! its own bound kbar_sw. kappa_sw stays in +-kbar_sw, so the certificate is unchanged, and the
+  //! residual that k_rob must cover never grows. 0 = off (kappa_ff alone follows its target).
+  double catch_up = 0.0;
   CorneringTarget cornering_target = CorneringTarget::rear_axle;
   CurvaturePreview curvature_preview = CurvaturePreview::centred_ramp;
-  //! Largest arc-length step [m] of the RK4 integration of the chain, relative to the shortest
-  //! wheelbase. A control period is split into at most max_substeps steps.
-  double max_substep_fraction = 0.1;
-  int max_substeps = 64;
+};
+
+//! Each compensation below is an optional group: `enabled` switches it, and while it is off its
+//! other fields must keep their defaults (validate() rejects them as inert otherwise). Beyond
+//! the paper (its outlook: actuator compensation).
+
+//! Smith predictor: the law acts on the pose predicted for the moment the new command takes
+//! effect, integrated with the kinematic model from the measured pose and the commands still in
+//! the pipe.
+struct DelayCompensation {
+  bool enabled = false;
+  //! Known delay [s] between the command and the steering it produces (dead time, plus the
+  //! group delay of the actuator's low-pass if desired), in (0, max_actuator_delay_s].
+  double actuator_delay_s = 0.0;
+};
+
+//! Dynamics inversion of the feedforward (docs/vehicle_dynamics.md, section 3). On the linear
+//! single-track model with yaw inertia m lf lr the rear axle's course curvature kappa follows
+//! the steering as delta = L kappa + (K_f - K_r) v^2 kappa + L (K_f + K_r) v^2 kappa'
+//! + L K_f K_r v^4 kappa'' (' = d/ds), with the slip gradients K_r = m lf / (L Cr) and
+//! K_f = m lr / (L Cf). The feedforward therefore aims the chain at g kappa(s + d) plus a
+//! second-order correction, g = 1 + (K_f - K_r) v^2 / L, d = (K_f + K_r) v^2 / g, reading the
+//! path d + preview_time_s |v| metres further ahead. The result still passes the clamp to
+//! +-kbar_ff and the rate limit L_ff, so the certificate holds unchanged.
+struct SingleTrackInversion {
+  bool enabled = false;
+  double rear_slip_gradient_s2pm = 0.0;   //!< K_r [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
+  double front_slip_gradient_s2pm = 0.0;  //!< K_f [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
+  double preview_time_s = 0.0;            //!< [s], in [0, max_actuator_delay_s]
+  //! With the second-order term K_f K_r v^4 kappa'' of the inversion (true), or only its
+  //! preview and gain (false). Near the friction limit the linear model over-corrects with it.
+  bool second_order = true;
+};
+
+//! Disturbance estimation (docs/feedforward.md, "disturbances on the vehicle"): a curvature the
+//! plant adds at the rear axle (understeer, a banked road, a steering offset) is estimated as the
+//! measured course curvature minus the commanded one, low-passed over length_m, and the
+//! feedforward aims the chain at the path's curvature minus it. The estimate enters only through
+//! kappa_ff, so |kappa_ff| <= kbar_ff, its rate limit and the certificate hold.
+struct DisturbanceEstimation {
+  bool enabled = false;
+  double length_m = 0.0;  //!< low-pass length [m], in [1, 1000]
+};
+
+//! Friction guard (docs/vehicle_dynamics.md): at speed v the lead wheel's curvature stays within
+//! the curvature whose stationary rear-axle curvature is a_max / v^2, so the car never asks more
+//! than a_max of its tires once the chain is stationary. kappa_ff moves into the shrunken range
+//! at its rate limit L_ff; kappa_sw is clipped.
+struct FrictionGuard {
+  bool enabled = false;
+  double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();  //!< a_max
+};
+
+//! Steering-actuator inversion (paper Outlook; Klauer et al. 2020): for an actuator of lag_count
+//! equal first-order lags with time constant T, (1 + T s)^m, the command is delta + a1 delta' +
+//! ... with a_k = C(m, k) T^k, using the chain's derivatives up to order n - 1 so that the
+//! command keeps a certified rate bound (docs/vehicle_dynamics.md). Needs order >= 2. The dead
+//! time is the Smith predictor's (DelayCompensation).
+struct ActuatorInversion {
+  bool enabled = false;
+  double time_constant_s = 0.0;  //!< T = 1 / pole [s], in (0, 0.5]
+  int lag_count = 3;             //!< m, in [1, 3]
+};
+
+//! Every setting of the lead-wheel controller, in groups (docs/controller.md, "Parameters"). The
+//! field table (parameter_fields.hpp) names each field once for validation, the scenario keys,
+//! the Python keywords and the docs.
+struct ControllerParameters {
+  static constexpr int max_order = max_chain_order;
+  //! Range of lambda_veh and of every lambda_i [m]: no car-like chain has a wheel 1 cm from
+  //! the next or 100 m away.
+  static constexpr double min_wheelbase_m = 0.01;
+  static constexpr double max_wheelbase_m = 100.0;
+  static constexpr double max_actuator_delay_s = 1.0;
+  static constexpr double max_slip_gradient_s2pm = 0.1;  //!< bound of K_r and K_f
   //! Shortest sub-step max_substep_fraction * min lambda_i allowed [m]. update() counts the
   //! sub-steps of a period as |v| dt / sub-step, at most 1e3 m/s * 1e3 s / 1e-3 m = 1e9 within
   //! ControllerInputRange: an int, before max_substeps caps it.
   static constexpr double min_substep_m = 1e-3;
+
+  ChainParameters chain{};
+  SwitchingLawParameters law{};
+  FeedforwardParameters feedforward{};
+  DelayCompensation delay_compensation{};
+  SingleTrackInversion single_track{};
+  DisturbanceEstimation disturbance_estimation{};
+  FrictionGuard friction_guard{};
+  ActuatorInversion actuator_inversion{};
+  //! Off by default: the split certificate of steering_certificate.hpp alone.
+  SteeringGovernor governor{};
+
+  //! kbar_ff = feedforward.share * kbar_n [1/m].
+  double feedforward_curvature_bound() const noexcept {
+    return feedforward.share * chain.lead_curvature_bound;
+  }
+  //! kbar_sw = kbar_n - kbar_ff [1/m]: authority of the switching part.
+  double switching_curvature_bound() const noexcept {
+    return (1.0 - feedforward.share) * chain.lead_curvature_bound;
+  }
 
   //! Throws std::invalid_argument naming the field, its value and the rule it breaks.
   void validate() const;

@@ -17,7 +17,10 @@
 #include <memory>
 
 #include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/controller/delay_prediction.hpp"
+#include "smoothsteer/controller/disturbance_estimator.hpp"
 #include "smoothsteer/controller/dubins_switching_law.hpp"
+#include "smoothsteer/controller/dynamics_inversion.hpp"
 #include "smoothsteer/controller/feedforward.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
@@ -75,8 +78,8 @@ class LeadWheelController final : public SteeringController {
   const SteeringCertificate& certificate() const noexcept { return certificate_; }
   //! Current kappa_ff [1/m] (rate limited and saturated, docs/feedforward.md).
   double feedforward_curvature() const noexcept { return feedforward_curvature_; }
-  //! The plant's curvature disturbance as estimated (0 unless disturbance_estimation_length_m).
-  double disturbance_estimate() const noexcept { return disturbance_estimate_; }
+  //! The plant's curvature disturbance as estimated (0 unless disturbance_estimation is on).
+  double disturbance_estimate() const noexcept { return disturbance_.estimate(); }
   const ChainAngles& chain_angles() const noexcept { return angles_; }
   //! +1 while driving forwards, -1 in reverse.
   double direction() const noexcept { return direction_; }
@@ -108,9 +111,11 @@ class LeadWheelController final : public SteeringController {
   void initialise_chain(double vehicle_steering_angle) noexcept;
   double front_angle_from_vehicle(double vehicle_steering_angle) const noexcept;
   double vehicle_steering_angle_of_chain() const noexcept;
-  //! Low-pass of the measured minus the commanded rear-axle curvature
-  //! (ControllerParameters::disturbance_estimation_length_m).
-  void update_disturbance_estimate(const ControllerInput& input) noexcept;
+  //! The Smith predictor's delay [s]; 0 while the delay compensation is off.
+  double compensated_delay_s() const noexcept {
+    return parameters_.delay_compensation.enabled ? parameters_.delay_compensation.actuator_delay_s
+                                                  : 0.0;
+  }
   //! Largest lead curvature the friction guard allows at `speed` [1/m] (+inf: no guard).
   double friction_guard_curvature(double speed) const noexcept;
 
@@ -119,51 +124,17 @@ class LeadWheelController final : public SteeringController {
   ChainBounds bounds_;
   SteeringCertificate certificate_;
   double feedforward_curvature_ = 0.0;
-  double dynamics_preview_m_ = 0.0;
-  //! Single-track inversion at the current speed (ControllerParameters::preview_time_s): the
-  //! chain aims at dynamics_gain_ kappa(s + dynamics_preview_m_) + dynamics_bend_ kappa''.
-  double dynamics_gain_ = 1.0;
-  double dynamics_bend_m2_ = 0.0;
-  //! (K_f + K_r) v^2 / g: how far the tires' slip lags the chain's curvature (the part of
-  //! dynamics_preview_m_ that the model asks for) [m].
-  double slip_lag_m_ = 0.0;
-  double disturbance_estimate_ = 0.0;  //!< kappa_d estimate [1/m]
-  Vec2 previous_position_{};           //!< rear axle at the last update()
-  double previous_course_ = 0.0;       //!< psi + beta_r at the last update()
-  bool has_previous_pose_ = false;     //!< previous_position_ and previous_course_ are set
-  //! The path's curvature at the rear axle at the last two update()s, and how far the car has
-  //! driven since it last moved faster than steady_lateral_jerk_mps3 allows [m].
-  double rear_path_curvature_ = 0.0;
-  double previous_rear_path_curvature_ = 0.0;
-  double steady_path_m_ = 0.0;
-  //! The disturbance estimate learns once the path's curvature has stayed steady (lateral jerk
-  //! v^3 |d kappa / ds| below 0.1 m/s^3, a fifth of the road-design comfort limit) for the
-  //! settling distance max(5 m, 0.5 s v) and then as much again: the slip and actuator lags the
-  //! model leaves have died out by then.
-  static constexpr double steady_lateral_jerk_mps3 = 0.1;
-  static constexpr double min_settling_m = 5.0;
-  static constexpr double settling_time_s = 0.5;
+  // The stages of compute_command() that keep state of their own, in the order they run:
+  // the single-track inversion at the current speed, the disturbance estimate, the delay
+  // prediction (whose command history the estimate reads too).
+  DynamicsInversion dynamics_{};
+  DisturbanceEstimator disturbance_{};
+  DelayPrediction delay_{};
   TargetCurve target_;  //!< target curve of the current period
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
   double chain_reach_ = 0.0;  //!< sum lambda_i: how far ahead of the rear axle the lead wheel is
   double largest_substep_m_ = 0.0;  //!< max_substep_fraction * min lambda_i [m]
-  //! Commands of the last periods, newest last, for the delay compensation (actuator_delay_s):
-  //! a ring buffer, so that update() does not allocate. 512 periods cover 1 s down to 2 ms.
-  struct IssuedCommand {
-    double steering_rad = 0.0;
-    double period_s = 0.0;
-  };
-  static constexpr std::size_t command_history_size = 512;
-  std::array<IssuedCommand, command_history_size> command_history_{};
-  std::size_t command_history_count_ = 0;  //!< valid entries
-  std::size_t command_history_next_ = 0;   //!< slot of the next command
-  //! The command issued `age` periods ago (0 = the newest); age < command_history_count_.
-  const IssuedCommand& issued_command(std::size_t age) const noexcept {
-    return command_history_[(command_history_next_ + command_history_size - 1 - age) %
-                            command_history_size];
-  }
-  Pose2 predicted_pose(const ControllerInput& input) const noexcept;
   double direction_ = 1.0;
   //! The governor's memory (ControllerParameters::governor): for n = 1 the command's rate at the
   //! end of the last sub-step, and |v| of the last period for the speed change between periods.
