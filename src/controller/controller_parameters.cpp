@@ -217,6 +217,23 @@ void ControllerParameters::validate() const {
   if (!error.empty()) throw std::invalid_argument(error);
 }
 
+namespace {
+
+//! What paper_c1 and paper_c0 share: the paper's law (Sec. II) on the given chain, the lead
+//! wheel on the path, no feedforward and kappa_n = kbar_n sign(sigma); validated.
+ControllerParameters with_paper_law(ControllerParameters parameters, double lead_curvature_bound,
+                                    double k_rob) {
+  parameters.chain.lead_curvature_bound = lead_curvature_bound;
+  parameters.law.k_rob = k_rob;
+  parameters.feedforward.cornering_target = CorneringTarget::lead_wheel;
+  parameters.feedforward.share = 0.0;   // the paper's law: no feedforward
+  parameters.law.boundary_layer = 0.0;  // and kappa_n = kbar_n sign(sigma)
+  parameters.validate();
+  return parameters;
+}
+
+}  // namespace
+
 ControllerParameters ControllerParameters::paper_c1(double vehicle_wheelbase_m,
                                                     double lead_wheelbase_m,
                                                     double lead_curvature_bound, double k_rob) {
@@ -230,13 +247,7 @@ ControllerParameters ControllerParameters::paper_c1(double vehicle_wheelbase_m,
                                          "must be < vehicle_wheelbase_m (eq. cornering_constr)"));
   }
   parameters.chain.wheelbases_m[1] = lead_wheelbase_m;
-  parameters.chain.lead_curvature_bound = lead_curvature_bound;
-  parameters.law.k_rob = k_rob;
-  parameters.feedforward.cornering_target = CorneringTarget::lead_wheel;
-  parameters.feedforward.share = 0.0;   // the paper's law: no feedforward
-  parameters.law.boundary_layer = 0.0;  // and kappa_n = kbar_n sign(sigma)
-  parameters.validate();
-  return parameters;
+  return with_paper_law(parameters, lead_curvature_bound, k_rob);
 }
 
 ControllerParameters ControllerParameters::paper_c0(double vehicle_wheelbase_m,
@@ -245,13 +256,7 @@ ControllerParameters ControllerParameters::paper_c0(double vehicle_wheelbase_m,
   parameters.chain.order = 1;
   parameters.chain.vehicle_wheelbase_m = vehicle_wheelbase_m;
   parameters.chain.wheelbases_m[0] = vehicle_wheelbase_m;
-  parameters.chain.lead_curvature_bound = front_curvature_bound;
-  parameters.law.k_rob = k_rob;
-  parameters.feedforward.cornering_target = CorneringTarget::lead_wheel;
-  parameters.feedforward.share = 0.0;   // the paper's law: no feedforward
-  parameters.law.boundary_layer = 0.0;  // and kappa_n = kbar_n sign(sigma)
-  parameters.validate();
-  return parameters;
+  return with_paper_law(parameters, front_curvature_bound, k_rob);
 }
 
 }  // namespace smoothsteer
