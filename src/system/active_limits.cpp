@@ -32,7 +32,7 @@ std::uint32_t active_limits(const LeadWheelController& controller, const Control
     limits |= limit_feedforward_bound;
   }
   if (p.chain.order > 0 && p.friction_guard.enabled && speed_mps > 0.0) {
-    // The guard's lead curvature (ControllerParameters::max_lateral_acceleration_mps2): the one
+    // The guard's lead curvature (FrictionGuard::max_lateral_acceleration_mps2): the one
     // whose stationary rear-axle curvature is a_max / v^2.
     double chain_length_squared = 0.0;
     for (int i = 0; i < p.chain.order; ++i) {

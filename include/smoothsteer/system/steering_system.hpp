@@ -92,7 +92,7 @@ enum ActiveLimit : std::uint32_t {
   limit_lead_curvature = 1u << 0,
   //! |kappa_ff| at kbar_ff: the feedforward is saturated.
   limit_feedforward_bound = 1u << 1,
-  //! The friction guard (ControllerParameters::max_lateral_acceleration_mps2) binds at this speed.
+  //! The friction guard (FrictionGuard::max_lateral_acceleration_mps2) binds at this speed.
   limit_friction_guard = 1u << 2,
   //! |kappa_n - kappa_ff| at or beyond kbar_sw: the switching part uses its certified authority.
   limit_switching_bound = 1u << 3,

@@ -31,7 +31,7 @@ struct SpeedCompensation {
   double friction_usage(double speed_mps) const noexcept;
   //! The Smith predictor's delay at |v| [s].
   double delay_s(double speed_mps) const noexcept;
-  //! The feedforward's catch-up at |v| (ControllerParameters::feedforward_catch_up).
+  //! The feedforward's catch-up at |v| (FeedforwardParameters::catch_up).
   double catch_up(double speed_mps) const noexcept;
 
   //! The first rule broken: every field finite, delays and gradients >= 0, mu g > 0.

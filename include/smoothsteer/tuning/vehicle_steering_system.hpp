@@ -57,7 +57,7 @@ struct SteeringSystemOptions {
   ControllerParameters controller = default_steering_system_controller();
   //! Single-track inversion with the vehicle's slip gradients K_f, K_r (docs/vehicle_dynamics.md).
   bool slip_preview = true;
-  //! Friction guard at the tires' mu g (ControllerParameters::max_lateral_acceleration_mps2).
+  //! Friction guard at the tires' mu g (FrictionGuard::max_lateral_acceleration_mps2).
   bool friction_guard = false;
   //! The Smith predictor's delay [s]; absent: it follows the speed from the actuator's dead time
   //! plus the group delay of its low-pass at low frequency, 3 / w_p (none for an ideal
