@@ -31,7 +31,7 @@ int main() {
       run_kinematic_closed_loop(controller, {{0.0, -41.0}, 0.0}, options);
   const bool within = result.max_abs_steering_difference_rate_radps <= car.max_steering_rate_radps;
   std::printf("consumer: tuned kbar_n = %.5f 1/m, held rate max %.3f rad/s (limit %.1f) -> %s\n",
-              parameters.lead_curvature_bound, result.max_abs_steering_difference_rate_radps,
+              parameters.chain.lead_curvature_bound, result.max_abs_steering_difference_rate_radps,
               car.max_steering_rate_radps, within ? "ok" : "FAILED");
   const bool converged =
       within && result.status == Status::ok && std::abs(result.final_lateral_error_m) < 0.01;
@@ -45,8 +45,8 @@ int main() {
   const GainSchedule read = io::read_schedule_csv(csv);
   std::filesystem::remove(csv);
   const bool same = read.entries().size() == 3 &&
-                    std::abs(read.parameters_at(10.0).lead_curvature_bound -
-                             schedule.parameters_at(10.0).lead_curvature_bound) < 1e-9;
+                    std::abs(read.parameters_at(10.0).chain.lead_curvature_bound -
+                             schedule.parameters_at(10.0).chain.lead_curvature_bound) < 1e-9;
   std::printf("consumer: schedule CSV round trip -> %s\n", same ? "ok" : "FAILED");
   return converged && same ? 0 : 1;
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/path_demand.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
+#include "smoothsteer/tuning/speed_compensation.hpp"
 
 namespace smoothsteer::python {
 namespace {
@@ -149,13 +151,29 @@ void bind_tuning(py::module_& m) {
       "TuningOptions keywords path_curvature_bound [1/m], path_curvature_rate_bound [1/m^2]) "
       "gives the curvature to follow. Raises InfeasibleLimits naming the binding limit.");
 
+  py::class_<SpeedCompensation>(
+      m, "SpeedCompensation",
+      "The Smith delay and the catch-up over speed (docs/vehicle_dynamics.md section 8).")
+      .def(py::init<>())
+      .def_readwrite("actuator_group_delay_s", &SpeedCompensation::actuator_group_delay_s)
+      .def_readwrite("slip_gradient_sum_s2pm", &SpeedCompensation::slip_gradient_sum_s2pm)
+      .def_readwrite("design_curvature_per_m", &SpeedCompensation::design_curvature_per_m)
+      .def_readwrite("friction_limit_mps2", &SpeedCompensation::friction_limit_mps2)
+      .def("friction_usage", &SpeedCompensation::friction_usage, py::arg("speed_mps"))
+      .def("delay_s", &SpeedCompensation::delay_s, py::arg("speed_mps"))
+      .def("catch_up", &SpeedCompensation::catch_up, py::arg("speed_mps"))
+      .def("validate", &SpeedCompensation::validate);
+
   py::class_<ScheduledController, SteeringController>(
       m, "ScheduledController", "The lead-wheel controller with parameters scheduled over speed.")
-      .def(py::init([](const GainSchedule& schedule, std::shared_ptr<Path> path) {
-             return std::make_unique<ScheduledController>(schedule, std::move(path));
+      .def(py::init([](const GainSchedule& schedule, std::shared_ptr<Path> path,
+                       std::optional<SpeedCompensation> compensation) {
+             return std::make_unique<ScheduledController>(schedule, std::move(path), compensation);
            }),
-           py::arg("schedule"), py::arg("path"))
-      .def_property_readonly("schedule", &ScheduledController::schedule);
+           py::arg("schedule"), py::arg("path"), py::arg("compensation") = py::none())
+      .def_property_readonly("schedule", &ScheduledController::schedule)
+      .def_property_readonly("compensation", &ScheduledController::compensation)
+      .def("parameters_at", &ScheduledController::parameters_at, py::arg("speed_mps"));
 }
 
 }  // namespace smoothsteer::python
