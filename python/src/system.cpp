@@ -253,9 +253,13 @@ void bind_system(py::module_& m) {
         "The ControllerParameters make_steering_system() gives its schedule as the template.");
   m.def("actuator_group_delay_s", &actuator_group_delay_s, py::arg("actuator"),
         "Dead time + 3 / w_p [s] (the default Smith delay).");
-  m.def("speed_compensation", &speed_compensation, py::arg("vehicle"),
-        py::arg("actuator_group_delay_s"), py::arg("path"),
-        "The SpeedCompensation of the car on the path (its largest curvature, the tires' mu g).");
+  m.def(
+      "speed_compensation",
+      [](const VehicleParameters& vehicle, double actuator_group_delay_s, const Path& path) {
+        return speed_compensation(vehicle, actuator_group_delay_s, path_demand(path));
+      },
+      py::arg("vehicle"), py::arg("actuator_group_delay_s"), py::arg("path"),
+      "The SpeedCompensation of the car on the path (its largest curvature, the tires' mu g).");
   m.def("describe_active_limits", &describe_active_limits, py::arg("limits"));
 }
 

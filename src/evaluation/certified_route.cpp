@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "smoothsteer/tuning/path_demand.hpp"
@@ -14,10 +15,16 @@ namespace {
 constexpr double speed_step_mps = 0.5;  // the step of the committed schedules (scenarios/*.yaml)
 constexpr double gravity_mps2 = 9.81;   // as load_vehicle_limits
 
-//! The options of the scenario's committed schedule: its template (`base`), its order and its
-//! feedforward headroom (the largest kbar_ff over the path's curvature bound; the CSV does not
-//! store the headroom, `tune --feedforward-headroom`).
-TuningOptions scenario_schedule_options(const runner::Scenario& scenario) {
+//! What the certified route takes from the scenario's own controller: the options of its
+//! committed schedule (the template `base`, the order and the feedforward headroom: the largest
+//! kbar_ff over the path's curvature bound; the CSV does not store the headroom, `tune
+//! --feedforward-headroom`) and its delay and catch-up over speed (derived_compensation).
+struct OwnSchedule {
+  TuningOptions options;
+  std::optional<SpeedCompensation> compensation;
+};
+
+OwnSchedule own_schedule(const runner::Scenario& scenario) {
   const std::unique_ptr<SteeringController> own = runner::make_controller(scenario);
   const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
   if (scheduled == nullptr) {
@@ -36,7 +43,7 @@ TuningOptions scenario_schedule_options(const runner::Scenario& scenario) {
     options.feedforward_headroom =
         std::clamp(std::round(ratio * resolution) / resolution, 1.0, 3.0);
   }
-  return options;
+  return {options, scheduled->compensation()};
 }
 
 }  // namespace
@@ -62,9 +69,10 @@ std::vector<double> certified_speed_grid(const runner::Scenario& scenario) {
   return speed_grid(speed_step_mps, last, speed_step_mps);
 }
 
-TuningOptions certified_route_options(const runner::Scenario& scenario,
-                                      const std::vector<std::pair<std::string, double>>& knobs) {
-  const TuningOptions committed = scenario_schedule_options(scenario);
+namespace {
+
+TuningOptions route_options(const runner::Scenario& scenario, const TuningOptions& committed,
+                            const std::vector<std::pair<std::string, double>>& knobs) {
   TuningOptions options;
   options.certificate = Certificate::feedforward;
   options.base = committed.base;
@@ -95,18 +103,23 @@ TuningOptions certified_route_options(const runner::Scenario& scenario,
   return options;
 }
 
+}  // namespace
+
+TuningOptions certified_route_options(const runner::Scenario& scenario,
+                                      const std::vector<std::pair<std::string, double>>& knobs) {
+  return route_options(scenario, own_schedule(scenario).options, knobs);
+}
+
 std::unique_ptr<SteeringController> make_certified_controller(
     const runner::Scenario& scenario, const std::vector<std::pair<std::string, double>>& knobs) {
-  const TuningOptions options = certified_route_options(scenario, knobs);
+  const OwnSchedule own = own_schedule(scenario);
+  const TuningOptions options = route_options(scenario, own.options, knobs);
   GainSchedule schedule = compute_feedforward_schedule(vehicle_limits_of(scenario), options,
                                                        certified_speed_grid(scenario));
-  // The delay and the catch-up over speed as the scenario's own controller has them
-  // (derived_compensation), so that the route differs from the file only in its schedule.
-  const std::unique_ptr<SteeringController> own = runner::make_controller(scenario);
-  const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
-  return std::make_unique<ScheduledController>(
-      std::move(schedule), scenario.path,
-      scheduled != nullptr ? scheduled->compensation() : std::nullopt);
+  // The delay and the catch-up over speed as the scenario's own controller has them, so that
+  // the route differs from the file only in its schedule.
+  return std::make_unique<ScheduledController>(std::move(schedule), scenario.path,
+                                               own.compensation);
 }
 
 }  // namespace smoothsteer

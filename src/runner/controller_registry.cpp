@@ -77,11 +77,10 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
   // slip_preview: the feedforward inverts the single-track model's lateral dynamics, with K_r
   // and K_f from the vehicle file.
   const bool slip_preview = c.boolean("slip_preview", defaults.single_track.enabled);
-  const double most = ControllerParameters::max_slip_gradient_s2pm;
-  find_parameter_field("rear_slip_gradient_s2pm")
-      ->set(p, slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0);
+  const InversionSlipGradients gradients = inversion_slip_gradients(vehicle);
+  find_parameter_field("rear_slip_gradient_s2pm")->set(p, slip_preview ? gradients.rear_s2pm : 0.0);
   find_parameter_field("front_slip_gradient_s2pm")
-      ->set(p, slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0);
+      ->set(p, slip_preview ? gradients.front_s2pm : 0.0);
   // friction_guard: never ask more than the tires' mu g (vehicle file) of lateral acceleration.
   find_parameter_field("max_lateral_acceleration_mps2")
       ->set(p, c.boolean("friction_guard", defaults.friction_guard.enabled)
@@ -177,7 +176,7 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
     // The scenario loader fills actuator_group_delay_s from the actuator block.
     const double group_delay = c.required_number("actuator_group_delay_s",
                                                  {0.0, ControllerParameters::max_actuator_delay_s});
-    compensation = speed_compensation(vehicle, group_delay, *path);
+    compensation = speed_compensation(vehicle, group_delay, path_demand(*path));
   }
   std::filesystem::path schedule_file = c.required_text("schedule");
   if (schedule_file.is_relative()) {

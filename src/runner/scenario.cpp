@@ -278,8 +278,10 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   // derived_compensation starts the Smith predictor's delay from the actuator's group delay,
   // which the controller section cannot know: the actuator block gives it.
   if (const YAML::Node& section = s.controller; section.IsMap()) {
+    // The same spellings as ConfigSection::boolean, which reads the key itself.
     const YAML::Node derived = section["derived_compensation"];
-    if (derived && derived.IsScalar() && derived.Scalar() == "true" &&
+    bool wanted = false;
+    if (derived && derived.IsScalar() && YAML::convert<bool>::decode(derived, wanted) && wanted &&
         !section["actuator_group_delay_s"]) {
       s.controller["actuator_group_delay_s"] = actuator_group_delay_s(s.actuator);
     }

@@ -79,14 +79,19 @@ double actuator_group_delay_s(const ActuatorParameters& actuator) noexcept {
   return actuator.dead_time_s + (actuator.ideal ? 0.0 : 3.0 / actuator.pole_radps());
 }
 
-SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
-                                     double actuator_group_delay_s, const Path& path) {
+InversionSlipGradients inversion_slip_gradients(const VehicleParameters& vehicle) noexcept {
   const double most = ControllerParameters::max_slip_gradient_s2pm;
+  return {std::min(vehicle.front_slip_gradient(), most),
+          std::min(vehicle.rear_slip_gradient(), most)};
+}
+
+SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
+                                     double actuator_group_delay_s, const PathDemand& path) {
+  const InversionSlipGradients gradients = inversion_slip_gradients(vehicle);
   SpeedCompensation compensation;
   compensation.actuator_group_delay_s = actuator_group_delay_s;
-  compensation.slip_gradient_sum_s2pm =
-      std::min(vehicle.front_slip_gradient(), most) + std::min(vehicle.rear_slip_gradient(), most);
-  compensation.design_curvature_per_m = path_demand(path).max_curvature;
+  compensation.slip_gradient_sum_s2pm = gradients.front_s2pm + gradients.rear_s2pm;
+  compensation.design_curvature_per_m = path.max_curvature;
   compensation.friction_limit_mps2 = vehicle.friction_limit_mps2();
   return compensation;
 }
@@ -97,11 +102,9 @@ ControllerParameters steering_system_controller(const VehicleDescription& car,
   ControllerParameters p = options.controller;
   p.chain.vehicle_wheelbase_m = vehicle.wheelbase_m();
   // As the scenario files' keys slip_preview and friction_guard (docs/scenarios.md).
-  const double most = ControllerParameters::max_slip_gradient_s2pm;
-  p.single_track.rear_slip_gradient_s2pm =
-      options.slip_preview ? std::min(vehicle.rear_slip_gradient(), most) : 0.0;
-  p.single_track.front_slip_gradient_s2pm =
-      options.slip_preview ? std::min(vehicle.front_slip_gradient(), most) : 0.0;
+  const InversionSlipGradients gradients = inversion_slip_gradients(vehicle);
+  p.single_track.rear_slip_gradient_s2pm = options.slip_preview ? gradients.rear_s2pm : 0.0;
+  p.single_track.front_slip_gradient_s2pm = options.slip_preview ? gradients.front_s2pm : 0.0;
   p.friction_guard.max_lateral_acceleration_mps2 = options.friction_guard
                                                        ? vehicle.friction_limit_mps2()
                                                        : std::numeric_limits<double>::infinity();
@@ -136,7 +139,7 @@ SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_p
   tuning.order = tuning.base.chain.order;
   tuning.feedforward_headroom = options.feedforward_headroom;
   tuning.max_longitudinal_acceleration_mps2 = options.max_longitudinal_acceleration_mps2;
-  apply_path_demand(tuning, path);
+  const PathDemand demand = apply_path_demand(tuning, path);
   const double step = options.speed_step_mps;
   // One step beyond: parameters_at() blends each interval's upper entry with the next one.
   const double last = std::ceil(options.max_speed_mps / step - 1e-9) * step + step;
@@ -149,7 +152,7 @@ SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_p
   // (speed_compensation.hpp), as the shipped scenarios' derived_compensation.
   std::optional<SpeedCompensation> compensation;
   if (!options.actuator_delay_s) {
-    compensation = speed_compensation(car.vehicle, actuator_group_delay_s(car.actuator), *path);
+    compensation = speed_compensation(car.vehicle, actuator_group_delay_s(car.actuator), demand);
   }
   return SteeringSystem(
       std::make_unique<ScheduledController>(std::move(schedule), std::move(path), compensation),

@@ -62,6 +62,8 @@ TEST_F(ScenarioErrors, DerivedCompensationConflictsWithTheKeysItSets) {
                     {shipped, std::string("'controller.") + key + "'", "(from --set)",
                      "conflicts with derived_compensation: true"});
   }
+  // Every spelling of true that the key accepts gets the actuator block's group delay.
+  EXPECT_EQ(error_of(shipped, {"controller.derived_compensation=yes"}), "");
   // Without the actuator block's group delay (a controller section read on its own) the key
   // that carries it is required.
   const std::string own =

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/tuning/path_demand.hpp"
 #include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "smoothsteer/tuning/speed_compensation.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
@@ -95,7 +96,7 @@ TEST(SpeedCompensation, IsDerivedFromTheVehicleAndThePath) {
   const VehicleParameters car;  // the passenger car (vehicles/passenger_car.yaml)
   const auto path = std::make_shared<const Path>(
       PathBuilder({0.0, 0.0}, 0.0).line(20.0).arc(30.0, 1.0).line(20.0).build());
-  const SpeedCompensation c = speed_compensation(car, 0.0243, *path);
+  const SpeedCompensation c = speed_compensation(car, 0.0243, path_demand(*path));
   EXPECT_EQ(c.actuator_group_delay_s, 0.0243);
   EXPECT_NEAR(c.design_curvature_per_m, 1.0 / 30.0, 1e-6);
   EXPECT_NEAR(c.slip_gradient_sum_s2pm, car.front_slip_gradient() + car.rear_slip_gradient(),

@@ -14,6 +14,7 @@
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/system/steering_system.hpp"
+#include "smoothsteer/tuning/path_demand.hpp"
 #include "smoothsteer/tuning/speed_compensation.hpp"
 #include "smoothsteer/tuning/vehicle_limits.hpp"
 #include "smoothsteer/validation.hpp"
@@ -80,11 +81,19 @@ VehicleLimits vehicle_limits(const VehicleParameters& vehicle);
 //! The Smith predictor's delay of the actuator: dead time + 3 / w_p (0 + dead time if ideal).
 double actuator_group_delay_s(const ActuatorParameters& actuator) noexcept;
 
-//! The delay and catch-up over speed (speed_compensation.hpp) of `vehicle` on `path`: t_act =
-//! `actuator_group_delay_s`, the slip gradients as the single-track inversion uses them, the
-//! path's largest curvature as kappa_d and the tires' mu g.
+//! The vehicle's slip gradients as the single-track inversion uses them: K_f, K_r of the vehicle
+//! file, each at most ControllerParameters::max_slip_gradient_s2pm.
+struct InversionSlipGradients {
+  double front_s2pm = 0.0;  //!< K_f [s^2/m]
+  double rear_s2pm = 0.0;   //!< K_r [s^2/m]
+};
+InversionSlipGradients inversion_slip_gradients(const VehicleParameters& vehicle) noexcept;
+
+//! The delay and catch-up over speed (speed_compensation.hpp) of `vehicle` on a path of demand
+//! `path` (path_demand.hpp): t_act = `actuator_group_delay_s`, the inversion's slip gradients,
+//! the path's largest curvature as kappa_d and the tires' mu g.
 SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
-                                     double actuator_group_delay_s, const Path& path);
+                                     double actuator_group_delay_s, const PathDemand& path);
 
 //! The controller parameters make_steering_system() gives the schedule as its template.
 ControllerParameters steering_system_controller(const VehicleDescription& car,
