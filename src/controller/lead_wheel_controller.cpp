@@ -98,6 +98,7 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   governor_rate_ = 0.0;  // stationary cornering
   feedforward_envelope_ = std::abs(feedforward_curvature_);
   far_share_ = 0.0;
+  heading_envelope_ = 0.0;
 }
 
 Status LeadWheelController::retune(const ControllerParameters& parameters) noexcept {
@@ -310,14 +311,19 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   const double guard = friction_guard_curvature(speed_magnitude);
   const double feedforward_bound = std::min(parameters_.feedforward_curvature_bound(), guard);
   const double switching_bound = parameters_.switching_curvature_bound();
-  const double feedforward_step =
-      step_length > 0.0 ? parameters_.feedforward.curvature_rate * step_length : 0.0;
   // The governor (steering_governor.hpp) holds the car's limits itself, so the split follows the
   // feedforward along s: the switching part gets what kappa_ff leaves of kbar_n, and with
   // law_length_m its boundary layer scales with it (epsilon = l kbar_sw / 2), which keeps the
   // law's linear zone kappa_sw = -e / l^2 - 2 psi / l whatever the authority.
   const SteeringGovernor& governor = parameters_.governor;
   const bool governed = governor.enabled && n > 0 && step_length > 0.0;
+  // Under the governor kappa_ff may move as fast as the car's rate limit can steer it, eq.
+  // (governed_feedforward_rate); the planned jumps keep the certified L_ff they were shaped with.
+  const double feedforward_rate =
+      governed ? std::max(parameters_.feedforward.curvature_rate,
+                          governed_feedforward_rate(parameters_, speed_magnitude))
+               : parameters_.feedforward.curvature_rate;
+  const double feedforward_step = step_length > 0.0 ? feedforward_rate * step_length : 0.0;
   GovernorStep governor_step;
   if (governed) {
     const double period_speed_change =
@@ -332,6 +338,8 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   previous_speed_ = speed_magnitude;
   const double far_law_reversal_bound =
       governed ? governed_reversal_curvature(parameters_, speed_magnitude) : 0.0;
+  const double heading_decay =
+      governed ? std::exp(-step_length / SteeringGovernor::far_law_memory_m) : 1.0;
   // The near-path law's authority: the certified kbar_sw (governed_parameters() keeps it).
   const double near_bound = governor.certified_switching_bound > 0.0
                                 ? std::min(governor.certified_switching_bound, switching_bound)
@@ -351,9 +359,15 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
                                      far_law_reversal_bound),
                             near_bound)
                  : switching_bound;
-    const double law_layer = governed && governor.law_length_m > 0.0
-                                 ? 0.5 * governor.law_length_m * law_bound
-                                 : parameters_.law.boundary_layer;
+    // Eq. (governed_law_length) at the envelope of the lead wheel's heading error, unless the
+    // parameters fix the length.
+    const double law_length =
+        !governed ? 0.0
+        : governor.law_length_m > 0.0
+            ? governor.law_length_m
+            : governed_law_length(parameters_, speed_magnitude, heading_envelope_);
+    const double law_layer =
+        governed ? 0.5 * law_length * law_bound : parameters_.law.boundary_layer;
     const double catch_up = parameters_.feedforward.catch_up * law_bound;
     LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0, law_bound, law_layer);
     if (governed) {
@@ -369,6 +383,9 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
           layer > 0.0 ? std::clamp(std::abs(near.sliding_variable) / layer - 1.0, 0.0, 1.0) : 1.0;
       far_share_ = std::max(wanted, far_share_ - step_length / SteeringGovernor::far_law_memory_m);
       lead.law.curvature = far_share_ * lead.law.curvature + (1.0 - far_share_) * near.curvature;
+      // The heading envelope forgets over the far law's memory, as its share does.
+      heading_envelope_ =
+          std::max(std::abs(lead.relative_heading), heading_envelope_ * heading_decay);
     }
     if (step == 0) first = lead;
     // Stage 4, the split: kappa_ff moves towards its target at L_ff, linearly within the

@@ -228,8 +228,9 @@ const std::array fields{
     SMOOTHSTEER_GET(governor.max_longitudinal_acceleration_mps2),
     SMOOTHSTEER_SET(governor.max_longitudinal_acceleration_mps2)},
   ParameterField{"governor.law_length_m", "governor.law_length_m", K::real, closed(0, 1000), "m",
-    "must be 0 (keep boundary_layer) or in (0, 1000] m", "l: boundary layer epsilon = "
-    "l kbar_sw / 2, a critically damped linear zone; 0 = keep `boundary_layer`", "", G::governor,
+    "must be 0 (derived) or in (0, 1000] m", "l: the far law's boundary layer epsilon = "
+    "l kbar_sw / 2, a critically damped linear zone; 0 = derived from the speed and the heading "
+    "error (eq. governed_law_length)", "", G::governor,
     false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.law_length_m), SMOOTHSTEER_SET(governor.law_length_m)},
   ParameterField{"governor.margin", "governor.margin", K::real, right_open(0, 0.5), "",

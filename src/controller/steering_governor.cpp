@@ -99,20 +99,20 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
                        low, high);
 }
 
-double governed_law_length(const ControllerParameters& parameters, double speed_mps) noexcept {
-  // Eq. (governed_law_length): l = max(sum lambda_i, 1 m + 0.25 s |v|, c sqrt(|v| lambda_veh / R)).
-  // The law asks kappa_sw = 2 psi / l for a heading error psi; the rate limit R delivers the
-  // steering lambda_veh kappa_sw within t = 2 lambda_veh psi / (l R), over which the car travels
-  // |v| t. Keeping that travel below l / 2 at psi = 0.06 rad (c^2 = 4 * 2 * 0.06) stops the loop
-  // from overshooting into a limit cycle against the rate limit; the second term keeps the
-  // heading time constant l / (2 |v|) near 0.13 s at speed, the time the car's rate limit needs
-  // to turn 0.1 rad of heading.
-  constexpr double c = 0.7;
+double governed_law_length(const ControllerParameters& parameters, double speed_mps,
+                           double heading_error_rad) noexcept {
+  // Eq. (governed_law_length): l = max(sum lambda_i, 1 m + 0.25 s |v|, sqrt(2 |v| lambda_veh |psi|
+  // / R)). The law asks kappa_sw = 2 psi / l for a heading error psi; the rate limit R delivers the
+  // steering lambda_veh kappa_sw within t = 2 lambda_veh |psi| / (l R), over which the car travels
+  // |v| t. Keeping that travel below l stops the loop from overshooting into a limit cycle
+  // against the rate limit, and no longer than that keeps a small heading error decisive. The
+  // second term keeps the heading time constant l / (2 |v|) near 0.13 s at speed.
   const double v = std::abs(speed_mps);
   const double reach = chain_reach(parameters.chain.wheelbases_m.data(), parameters.chain.order);
   const double rate = parameters.governor.max_steering_rate_radps;
   const double rate_bound = std::isfinite(rate) && rate > 0.0
-                                ? c * std::sqrt(v * parameters.chain.vehicle_wheelbase_m / rate)
+                                ? std::sqrt(2.0 * v * parameters.chain.vehicle_wheelbase_m *
+                                            std::abs(heading_error_rad) / rate)
                                 : 0.0;
   return std::max({reach, 1.0 + 0.25 * v, rate_bound});
 }
@@ -121,14 +121,23 @@ double governed_reversal_curvature(const ControllerParameters& parameters,
                                    double speed_mps) noexcept {
   const double v = std::abs(speed_mps);
   const double rate = parameters.governor.max_steering_rate_radps;
-  const double length = parameters.governor.law_length_m > 0.0 ? parameters.governor.law_length_m
-                                                               : governed_law_length(parameters, v);
+  const double length = parameters.governor.law_length_m > 0.0
+                            ? parameters.governor.law_length_m
+                            : governed_law_length(parameters, v, governed_reversal_heading_rad);
   if (!(v > 0.0) || !std::isfinite(rate)) return unbounded;
   // n = 1 reverses within half the law's length: its command follows kappa_n within a sub-step,
   // and at the full length a random closed loop (v = 18.7 m/s, R = 1.5 rad/s) kept a 0.29 m limit
   // cycle. n = 2 uses the whole length: its chain filters kappa_n once more.
   const double travel = parameters.chain.order == 1 ? 0.5 * length : length;
   return travel * rate / (2.0 * parameters.chain.vehicle_wheelbase_m * v);
+}
+
+double governed_feedforward_rate(const ControllerParameters& parameters,
+                                 double speed_mps) noexcept {
+  const double v = std::abs(speed_mps);
+  const double rate = parameters.governor.max_steering_rate_radps;
+  if (!(v > 0.0) || !std::isfinite(rate)) return unbounded;
+  return rate / (parameters.chain.vehicle_wheelbase_m * v);
 }
 
 ControllerParameters governed_parameters(const ControllerParameters& certified,
@@ -163,7 +172,6 @@ ControllerParameters governed_parameters(const ControllerParameters& certified,
     p.chain.lead_curvature_bound = bound;
     p.feedforward.share = std::min(feedforward / bound, 0.95);
   }
-  if (p.governor.law_length_m <= 0.0) p.governor.law_length_m = governed_law_length(p, v);
   return p.is_valid() ? p : certified;
 }
 

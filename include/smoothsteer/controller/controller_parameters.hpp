@@ -66,7 +66,8 @@ struct SteeringGovernor {
   //! l [m]: length scale of the law near the path. The boundary layer becomes
   //! epsilon = l kbar_sw / 2, so that the law's linear zone is the critically damped
   //! kappa_sw = -e / l^2 - 2 psi / l whatever the authority kbar_sw (docs/governor.md).
-  //! 0 = keep boundary_layer.
+  //! 0 = derived at every sub-step from the speed, R and the lead wheel's heading error
+  //! (governed_law_length(), eq. governed_law_length).
   double law_length_m = 0.0;
   //! Share of R and A kept in reserve for the variation of the chain within a sub-step.
   double margin = 0.02;

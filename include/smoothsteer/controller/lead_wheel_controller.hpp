@@ -141,6 +141,7 @@ class LeadWheelController final : public SteeringController {
   double governor_rate_ = 0.0;
   double feedforward_envelope_ = 0.0;  //!< decaying max of |kappa_ff| (the far law's authority)
   double far_share_ = 0.0;             //!< weight of the far law in kappa_sw, in [0, 1]
+  double heading_envelope_ = 0.0;      //!< decaying max of the lead wheel's |heading error| [rad]
   double previous_speed_ = -1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;

@@ -59,21 +59,34 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
 //! Eq. (governed_reversal): the far law's largest authority at speed |v| [1/m], d R / (2
 //! lambda_veh |v|): reversing the steering of +-kbar at the rate limit R takes 2 lambda_veh kbar /
 //! R seconds, and the car must not travel more than d meanwhile, or the law overshoots its surface
-//! into a limit cycle; d = l for n = 2, l / 2 for n = 1 (docs/governor.md, section 4).
+//! into a limit cycle; d = l for n = 2, l / 2 for n = 1 (docs/governor.md, section 4), with l the
+//! configured law length, else governed_law_length() at governed_reversal_heading_rad.
 double governed_reversal_curvature(const ControllerParameters& parameters,
                                    double speed_mps) noexcept;
+//! The heading error [rad] at which the reversal bound takes the law length: there
+//! governed_law_length() is 0.7 sqrt(|v| lambda_veh / R), the length the bound was sized with.
+inline constexpr double governed_reversal_heading_rad = 0.245;
+
+//! Eq. (governed_feedforward_rate): the rate [1/m^2] at which the feedforward's lead curvature may
+//! change under the governor, R / (lambda_veh |v|): the steering follows it at the car's rate
+//! limit (d delta / dt ~ lambda_veh |v| d kappa / ds), and the governor holds the rate and the
+//! acceleration that result. The certified L_ff bounds the rate over the whole box instead; the
+//! feedforward uses the larger of the two (docs/governor.md, section 4). +inf at standstill.
+double governed_feedforward_rate(const ControllerParameters& parameters, double speed_mps) noexcept;
 
 //! Eq. (governed_authority): the parameters at speed |v| under the governor, from certified ones
 //! (a schedule entry, whose wheelbases, k_rob and L_ff are kept). The lead curvature bound
 //! becomes the largest the car's angle and friction limits allow (never less than the certified
-//! one), kbar_ff at least governed_feedforward_share of it, and a law length of 0 the derived
-//! governed_law_length(). Returns `certified` unchanged when the governor is off or the widened
-//! set would leave the invariant sets (kbar_i lambda_i >= 1).
+//! one), and kbar_ff at least governed_feedforward_share of it. Returns `certified` unchanged when
+//! the governor is off or the widened set would leave the invariant sets (kbar_i lambda_i >= 1).
 ControllerParameters governed_parameters(const ControllerParameters& certified,
                                          double speed_mps) noexcept;
 inline constexpr double governed_feedforward_share = 0.8;
-//! l(v) [m]: the law's length scale near the path, from the time the rate limit needs to turn
-//! the heading (docs/governor.md).
-double governed_law_length(const ControllerParameters& parameters, double speed_mps) noexcept;
+//! Eq. (governed_law_length), l(v, psi) [m]: the far law's length scale, from the travel the rate
+//! limit needs to turn a heading error psi (docs/governor.md, section 4). The controller passes
+//! the envelope of its lead wheel's heading error, so that l shortens for a small error and does
+//! not shrink in the middle of correcting a large one.
+double governed_law_length(const ControllerParameters& parameters, double speed_mps,
+                           double heading_error_rad) noexcept;
 
 }  // namespace smoothsteer
