@@ -105,9 +105,10 @@ def check_comparison(readme, root, errors):
     totals = {r[columns.index("controller")]: dict(zip(columns, r)) for r in summary[1:]
               if r[columns.index("plant")] == "single-track"}
     for controller, pattern in (
-            ("stanley", r"Stanley held to the\s+same limits.*?on (\d+) of the 21.*?"
-                        r"mean max \|e\| of (\d+\.\d+) m"),
-            ("certified", r"the certified route on (\d+) of 21.*?with\s+(\d+\.\d+) m")):
+            ("stanley", r"Stanley\s+held\s+to\s+the\s+same\s+limits\s+on\s+(\d+)\s.*?"
+                        r"with\s+(\d+\.\d+) m"),
+            ("certified", r"the certified route\s+has the smallest max \|e\| on (\d+) of the 21"
+                          r".*?mean max \|e\| of (\d+\.\d+) m")):
         match = re.search(pattern, compares, re.S)
         row = totals.get(controller)
         if not match or row is None or match.group(1) != row["best_of"] or \
