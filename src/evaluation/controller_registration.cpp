@@ -64,8 +64,10 @@ void register_comparison_controllers() {
   for (const std::string& name : comparison_controller_names()) {
     runner::register_controller_type(
         name,
-        [name](io::ConfigSection& section, std::shared_ptr<const Path> path,
-               const VehicleParameters& vehicle) -> std::unique_ptr<SteeringController> {
+        [name](io::ConfigSection& section,
+               const runner::ControllerContext& context) -> std::unique_ptr<SteeringController> {
+          const VehicleParameters& vehicle = context.vehicle;
+          const std::shared_ptr<const Path>& path = context.path;
           // Limits C1, C2 and the steering acceleration: the vehicle's, unless the section sets
           // the rate or acceleration limit (e.g. to the scenario actuator's max_rate_radps).
           SteeringLimits limits{
@@ -78,7 +80,7 @@ void register_comparison_controllers() {
                 section.required_number("max_steering_acceleration_radps2", io::Range::positive());
           }
           ComparisonSetup setup;
-          setup.path = std::move(path);
+          setup.path = path;
           setup.wheelbase_m = vehicle.wheelbase_m();
           setup.nominal_speed_mps =
               section.number("nominal_speed_mps", 10.0, io::Range::positive());

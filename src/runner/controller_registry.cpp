@@ -110,8 +110,8 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
 }
 
 std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
-                                                    std::shared_ptr<const Path> path,
-                                                    const VehicleParameters& vehicle) {
+                                                    const ControllerContext& context) {
+  const VehicleParameters& vehicle = context.vehicle;
   ControllerParameters p;
   const double wheelbase = vehicle.wheelbase_m();
   p.chain.vehicle_wheelbase_m = wheelbase;
@@ -147,14 +147,15 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
   if (const std::string error = p.validation_error(); !error.empty()) {
     throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error);
   }
-  return std::make_unique<LeadWheelController>(p, std::move(path));
+  return std::make_unique<LeadWheelController>(p, context.path);
 }
 
 //! The lead-wheel controller with a gain schedule from `smoothsteer tune` (docs/tuning.md):
 //! `schedule` is the CSV, relative to the scenario file; lambda, lambda_l and kbar_l follow |v|.
 std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
-                                                              std::shared_ptr<const Path> path,
-                                                              const VehicleParameters& vehicle) {
+                                                              const ControllerContext& context) {
+  const VehicleParameters& vehicle = context.vehicle;
+  const std::shared_ptr<const Path>& path = context.path;
   ControllerParameters base;
   base.chain.vehicle_wheelbase_m = vehicle.wheelbase_m();
   // The Smith predictor's delay and the catch-up over speed from the car (speed_compensation.hpp)
@@ -173,10 +174,8 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
   std::optional<SpeedCompensation> compensation;
   if (derived) {
     if (!path) c.fail("derived_compensation", "needs the path (its largest curvature)");
-    // The scenario loader fills actuator_group_delay_s from the actuator block.
-    const double group_delay = c.required_number("actuator_group_delay_s",
-                                                 {0.0, ControllerParameters::max_actuator_delay_s});
-    compensation = speed_compensation(vehicle, group_delay, path_demand(*path));
+    compensation =
+        speed_compensation(vehicle, actuator_group_delay_s(context.actuator), path_demand(*path));
   }
   std::filesystem::path schedule_file = c.required_text("schedule");
   if (schedule_file.is_relative()) {
@@ -184,7 +183,7 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
   }
   try {
     return std::make_unique<ScheduledController>(read_schedule_csv(schedule_file.string(), base),
-                                                 std::move(path), compensation);
+                                                 path, compensation);
   } catch (const std::invalid_argument& error) {
     c.fail("schedule", error.what());  // [[noreturn]]
   }
@@ -219,7 +218,7 @@ std::vector<std::string> controller_types() {
 
 std::unique_ptr<SteeringController> make_controller(
     const YAML::Node& section, const std::string& key_path, const std::string& file,
-    std::shared_ptr<const Path> path, const VehicleParameters& vehicle, YAML::Node* resolved,
+    const ControllerContext& context, YAML::Node* resolved,
     std::shared_ptr<const std::set<std::string>> overridden_keys) {
   ConfigSection c(section, key_path, file);
   c.set_overridden_keys(std::move(overridden_keys));
@@ -232,7 +231,7 @@ std::unique_ptr<SteeringController> make_controller(
     std::lock_guard lock(r.mutex);
     factory = r.factories.at(type);
   }
-  std::unique_ptr<SteeringController> controller = factory(c, std::move(path), vehicle);
+  std::unique_ptr<SteeringController> controller = factory(c, context);
   c.finish();
   if (resolved) *resolved = c.resolved();
   return controller;

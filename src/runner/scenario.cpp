@@ -10,7 +10,6 @@
 #include "smoothsteer/runner/controller_registry.hpp"
 #include "smoothsteer/sim/curvature_speed_profile.hpp"
 #include "smoothsteer/sim/gear_changes.hpp"
-#include "smoothsteer/tuning/vehicle_steering_system.hpp"
 
 namespace smoothsteer::runner {
 using io::ConfigError;
@@ -275,20 +274,9 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   }
 
   s.controller = YAML::Clone(c.raw("controller"));
-  // derived_compensation starts the Smith predictor's delay from the actuator's group delay,
-  // which the controller section cannot know: the actuator block gives it.
-  if (const YAML::Node& section = s.controller; section.IsMap()) {
-    // The same spellings as ConfigSection::boolean, which reads the key itself.
-    const YAML::Node derived = section["derived_compensation"];
-    bool wanted = false;
-    if (derived && derived.IsScalar() && YAML::convert<bool>::decode(derived, wanted) && wanted &&
-        !section["actuator_group_delay_s"]) {
-      s.controller["actuator_group_delay_s"] = actuator_group_delay_s(s.actuator);
-    }
-  }
   YAML::Node resolved_controller;
-  make_controller(s.controller, "controller", file, s.path, s.vehicle, &resolved_controller,
-                  overridden);
+  make_controller(s.controller, "controller", file, {s.path, s.vehicle, s.actuator},
+                  &resolved_controller, overridden);
   c.finish();
 
   YAML::Node all = c.resolved();
@@ -311,7 +299,7 @@ std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& s) {
 }
 
 std::unique_ptr<SteeringController> make_controller(const Scenario& s) {
-  return make_controller(s.controller, "controller", s.file, s.path, s.vehicle);
+  return make_controller(s.controller, "controller", s.file, {s.path, s.vehicle, s.actuator});
 }
 
 RunResult run_scenario(const Scenario& s, SteeringController& controller) {

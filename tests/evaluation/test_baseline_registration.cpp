@@ -19,8 +19,8 @@ namespace {
 std::unique_ptr<SteeringController> build(const std::string& yaml) {
   register_comparison_controllers();
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 100.0));
-  return runner::make_controller(YAML::Load(yaml), "controller", "scenario.yaml", path,
-                                 VehicleParameters{});
+  return runner::make_controller(YAML::Load(yaml), "controller", "scenario.yaml",
+                                 {path, VehicleParameters{}, ActuatorParameters{}});
 }
 
 std::string error_of(const std::string& yaml) {

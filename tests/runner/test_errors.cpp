@@ -64,13 +64,10 @@ TEST_F(ScenarioErrors, DerivedCompensationConflictsWithTheKeysItSets) {
   }
   // Every spelling of true that the key accepts gets the actuator block's group delay.
   EXPECT_EQ(error_of(shipped, {"controller.derived_compensation=yes"}), "");
-  // Without the actuator block's group delay (a controller section read on its own) the key
-  // that carries it is required.
-  const std::string own =
-      write("d.yaml", std::string("name: t\npath: {type: straight}\nspeed: {initial_mps: 5}\n") +
-                          "controller: {type: scheduled_lead_wheel, derived_compensation: true, "
-                          "actuator_group_delay_s: -1, schedule: x.csv}\n");
-  expect_contains(error_of(own), {own, "'controller.actuator_group_delay_s'"});
+  // The actuator's group delay comes from the scenario's actuator block, not from a key of the
+  // controller section.
+  expect_contains(error_of(shipped, {"controller.actuator_group_delay_s=0.02"}),
+                  {shipped, "'controller.actuator_group_delay_s'", "unknown"});
 }
 
 TEST_F(ScenarioErrors, MalformedYamlNamesFileAndLine) {

@@ -102,8 +102,7 @@ TEST(Registry, OtherLibrariesCanAddControllerTypes) {
    private:
     double angle_;
   };
-  register_controller_type("test_fixed", [](io::ConfigSection& c, std::shared_ptr<const Path>,
-                                            const VehicleParameters&) {
+  register_controller_type("test_fixed", [](io::ConfigSection& c, const ControllerContext&) {
     return std::make_unique<Straight>(c.number("angle_rad", 0.0, {-0.5, 0.5}));
   });
   const std::string file = (source_dir() / "scenarios/reaching_0.yaml").string();

@@ -14,13 +14,21 @@
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/vehicle/steering_actuator.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
 
 namespace smoothsteer::runner {
 
+//! What a factory may read besides its own section: the scenario's path, vehicle file and
+//! steering actuator (the derived compensation starts from the actuator's group delay).
+struct ControllerContext {
+  std::shared_ptr<const Path> path;
+  VehicleParameters vehicle;
+  ActuatorParameters actuator;
+};
+
 using ControllerFactory = std::function<std::unique_ptr<SteeringController>(
-    io::ConfigSection& controller_section, std::shared_ptr<const Path> path,
-    const VehicleParameters& vehicle)>;
+    io::ConfigSection& controller_section, const ControllerContext& context)>;
 
 //! Adds or replaces a controller type. "lead_wheel" is built in.
 void register_controller_type(const std::string& name, ControllerFactory factory);
@@ -32,8 +40,7 @@ std::vector<std::string> controller_types();
 //! every default filled in.
 std::unique_ptr<SteeringController> make_controller(
     const YAML::Node& section, const std::string& key_path, const std::string& file,
-    std::shared_ptr<const Path> path, const VehicleParameters& vehicle,
-    YAML::Node* resolved = nullptr,
+    const ControllerContext& context, YAML::Node* resolved = nullptr,
     std::shared_ptr<const std::set<std::string>> overridden_keys = nullptr);
 
 }  // namespace smoothsteer::runner
