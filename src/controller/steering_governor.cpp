@@ -9,28 +9,61 @@
 
 namespace smoothsteer {
 
+namespace {
+
+//! What steering_derivatives() needs of a chain state, whatever the lead curvature: the
+//! chain's trigonometry and d delta_veh / d delta_1 with its slope.
+struct CommandJacobian {
+  ChainTrigonometry trigonometry;
+  double gain = 0.0;        //!< d delta_veh / d delta_1
+  double gain_slope = 0.0;  //!< d gain / d delta_1 (n >= 2)
+};
+
+CommandJacobian command_jacobian(const ChainAngles& angles,
+                                 const ControllerParameters& parameters) noexcept {
+  const int n = parameters.chain.order;
+  const double ratio = parameters.chain.vehicle_wheelbase_m / parameters.chain.wheelbases_m[0];
+  CommandJacobian result;
+  result.trigonometry = chain_trigonometry(angles, n);
+  if (n >= 2) {
+    // chain_trigonometry has cos and sin of delta_1 for n >= 2.
+    result.gain =
+        vehicle_angle_gain(result.trigonometry.front_cosine, result.trigonometry.front_sine, ratio);
+    result.gain_slope = vehicle_angle_gain_slope(angles[0], ratio, result.gain);
+  } else {
+    result.gain = vehicle_angle_gain(angles[0], ratio);
+  }
+  return result;
+}
+
+CommandDerivatives command_derivatives(const CommandJacobian& jacobian,
+                                       const ControllerParameters& parameters, double direction,
+                                       double speed_magnitude, double acceleration_mps2,
+                                       double lead_curvature) noexcept {
+  CommandDerivatives result;
+  const int n = parameters.chain.order;
+  const FrontAngleDerivatives d = front_angle_derivatives(
+      jacobian.trigonometry, parameters.chain.wheelbases_m.data(), n, lead_curvature);
+  const double front_rate = speed_magnitude * d.first;
+  result.rate_radps = direction * jacobian.gain * front_rate;
+  if (n >= 2) {
+    const double front_acceleration =
+        speed_magnitude * speed_magnitude * d.second + direction * acceleration_mps2 * d.first;
+    result.acceleration_radps2 = direction * (jacobian.gain_slope * front_rate * front_rate +
+                                              jacobian.gain * front_acceleration);
+  }
+  return result;
+}
+
+}  // namespace
+
 CommandDerivatives steering_derivatives(const ChainAngles& angles,
                                         const ControllerParameters& parameters, double direction,
                                         double speed_magnitude, double acceleration_mps2,
                                         double lead_curvature) noexcept {
-  CommandDerivatives result;
-  const int n = parameters.chain.order;
-  if (n == 0) return result;
-  const double* wheelbases = parameters.chain.wheelbases_m.data();
-  const double ratio = parameters.chain.vehicle_wheelbase_m / wheelbases[0];
-  const double front = angles[0];
-  const double gain = vehicle_angle_gain(front, ratio);  // d delta_veh / d delta_1
-  const FrontAngleDerivatives d = front_angle_derivatives(angles, wheelbases, n, lead_curvature);
-  const double front_rate = speed_magnitude * d.first;
-  result.rate_radps = direction * gain * front_rate;
-  if (n >= 2) {
-    const double front_acceleration =
-        speed_magnitude * speed_magnitude * d.second + direction * acceleration_mps2 * d.first;
-    result.acceleration_radps2 =
-        direction * (vehicle_angle_gain_slope(front, ratio) * front_rate * front_rate +
-                     gain * front_acceleration);
-  }
-  return result;
+  if (parameters.chain.order == 0) return {};
+  return command_derivatives(command_jacobian(angles, parameters), parameters, direction,
+                             speed_magnitude, acceleration_mps2, lead_curvature);
 }
 
 namespace {
@@ -61,9 +94,11 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
   const double keep = 1.0 - governor.margin;
   const double rate_limit = keep * governor.max_steering_rate_radps;
   const double acceleration_limit = keep * governor.max_steering_acceleration_radps2;
-  // The command as a function of kappa_n at this state: two evaluations of an affine map.
-  const CommandDerivatives zero = steering_derivatives(angles, parameters, direction, v, 0.0, 0.0);
-  const CommandDerivatives one = steering_derivatives(angles, parameters, direction, v, 0.0, 1.0);
+  // The command as a function of kappa_n at this state: two evaluations of an affine map, which
+  // share the state's trigonometry.
+  const CommandJacobian jacobian = command_jacobian(angles, parameters);
+  const CommandDerivatives zero = command_derivatives(jacobian, parameters, direction, v, 0.0, 0.0);
+  const CommandDerivatives one = command_derivatives(jacobian, parameters, direction, v, 0.0, 1.0);
   if (parameters.chain.order == 1) {
     // rate(kappa) = zero.rate + (one.rate - zero.rate) kappa; its change from the last sub-step
     // is bounded by (A - |dv/dt| |rate| / v) h.
@@ -73,7 +108,7 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
     const double previous = step.previous_rate_radps;
     const double front = angles[0];
     const double ratio = parameters.chain.vehicle_wheelbase_m / parameters.chain.wheelbases_m[0];
-    const double gain = vehicle_angle_gain(front, ratio);
+    const double gain = jacobian.gain;
     const double front_rate = std::abs(previous) / (v * gain);  // |delta_1'| [rad/m]
     const double cosine = std::cos(front);
     const double drift = v * (std::abs(vehicle_angle_gain_slope(front, ratio)) / gain * front_rate +

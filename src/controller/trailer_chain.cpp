@@ -5,15 +5,20 @@
 #include <limits>
 
 namespace smoothsteer {
+double vehicle_angle_gain(double front_cosine, double front_sine, double ratio) noexcept {
+  return ratio / (front_cosine * front_cosine + ratio * ratio * front_sine * front_sine);
+}
+
 double vehicle_angle_gain(double front_angle, double ratio) noexcept {
-  const double c = std::cos(front_angle);
-  const double s = std::sin(front_angle);
-  return ratio / (c * c + ratio * ratio * s * s);
+  return vehicle_angle_gain(std::cos(front_angle), std::sin(front_angle), ratio);
+}
+
+double vehicle_angle_gain_slope(double front_angle, double ratio, double gain) noexcept {
+  return -gain * gain * std::sin(2.0 * front_angle) * (ratio * ratio - 1.0) / ratio;
 }
 
 double vehicle_angle_gain_slope(double front_angle, double ratio) noexcept {
-  const double gain = vehicle_angle_gain(front_angle, ratio);
-  return -gain * gain * std::sin(2.0 * front_angle) * (ratio * ratio - 1.0) / ratio;
+  return vehicle_angle_gain_slope(front_angle, ratio, vehicle_angle_gain(front_angle, ratio));
 }
 
 namespace {
@@ -87,11 +92,23 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
   return bounds;
 }
 
-void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
+ChainTrigonometry chain_trigonometry(const ChainAngles& delta, int order) noexcept {
+  ChainTrigonometry result;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(order); ++k) {
+    result.tangent[k] = std::tan(delta[k]);
+  }
+  if (order >= 2) {
+    result.front_cosine = std::cos(delta[0]);
+    result.front_sine = std::sin(delta[0]);
+    result.second_cosine = std::cos(delta[1]);
+  }
+  return result;
+}
+
+void chain_rates(const ChainTrigonometry& trigonometry, const double* wheelbases, int order,
                  double lead_curvature, ChainAngles& rates) noexcept {
-  // One tan per angle: inside the invariant sets |delta_i| < pi/2, so 1/cos = sqrt(1 + tan^2).
-  ChainAngles tangent{};
-  for (std::size_t k = 0; k < static_cast<std::size_t>(order); ++k) tangent[k] = std::tan(delta[k]);
+  // Inside the invariant sets |delta_i| < pi/2, so 1/cos = sqrt(1 + tan^2).
+  const ChainAngles& tangent = trigonometry.tangent;
   double distance_ratio = 1.0;  // ds_{i-1} / ds
   for (int i = 0; i < order; ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -103,23 +120,40 @@ void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
   }
 }
 
-FrontAngleDerivatives front_angle_derivatives(const ChainAngles& delta, const double* wheelbases,
-                                              int order, double lead_curvature) noexcept {
+void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
+                 double lead_curvature, ChainAngles& rates) noexcept {
+  // One tan per angle (chain_trigonometry's front terms are for n >= 2 only).
+  ChainTrigonometry trigonometry;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(order); ++k) {
+    trigonometry.tangent[k] = std::tan(delta[k]);
+  }
+  chain_rates(trigonometry, wheelbases, order, lead_curvature, rates);
+}
+
+FrontAngleDerivatives front_angle_derivatives(const ChainTrigonometry& trigonometry,
+                                              const double* wheelbases, int order,
+                                              double lead_curvature) noexcept {
   FrontAngleDerivatives result;
   if (order < 1) return result;
   ChainAngles rates{};
-  chain_rates(delta, wheelbases, order, lead_curvature, rates);
+  chain_rates(trigonometry, wheelbases, order, lead_curvature, rates);
   result.first = rates[0];
   if (order < 2) return result;
   // delta_1' = K_1 / cos(delta_1) - tan(delta_1) / lambda_1 with K_1 = tan(delta_2) / lambda_2.
-  const double c1 = std::cos(delta[0]);
-  const double c2 = std::cos(delta[1]);
-  const double front_curvature = std::tan(delta[1]) / wheelbases[1];
+  const double c1 = trigonometry.front_cosine;
+  const double c2 = trigonometry.second_cosine;
+  const double front_curvature = trigonometry.tangent[1] / wheelbases[1];
   const double front_curvature_rate = rates[1] / (c2 * c2 * wheelbases[1]);
   result.second = front_curvature_rate / c1 +
-                  front_curvature * std::sin(delta[0]) / (c1 * c1) * rates[0] -
+                  front_curvature * trigonometry.front_sine / (c1 * c1) * rates[0] -
                   rates[0] / (c1 * c1 * wheelbases[0]);
   return result;
+}
+
+FrontAngleDerivatives front_angle_derivatives(const ChainAngles& delta, const double* wheelbases,
+                                              int order, double lead_curvature) noexcept {
+  return front_angle_derivatives(chain_trigonometry(delta, order), wheelbases, order,
+                                 lead_curvature);
 }
 
 void chain_geometry(Vec2 rear_position, double rear_heading, const ChainAngles& delta,

@@ -37,8 +37,12 @@ struct ChainBounds {
 //! d delta_veh / d delta_1 for delta_veh = atan(r tan(delta_1)), r = lambda_veh / lambda_1
 //! (paper_notes §3): r / (cos^2 delta_1 + r^2 sin^2 delta_1).
 double vehicle_angle_gain(double front_angle, double ratio) noexcept;
+//! The same from cos(delta_1) and sin(delta_1), where the caller has them.
+double vehicle_angle_gain(double front_cosine, double front_sine, double ratio) noexcept;
 //! d gain / d delta_1 = -gain^2 sin(2 delta_1) (r^2 - 1) / r.
 double vehicle_angle_gain_slope(double front_angle, double ratio) noexcept;
+//! The same with the gain at delta_1 already known.
+double vehicle_angle_gain_slope(double front_angle, double ratio, double gain) noexcept;
 
 //! Propagates kbar_n down the chain: kbar_{i-1} = kbar_i / sqrt(1 - kbar_i^2 lambda_i^2).
 //! Requires valid parameters.
@@ -46,8 +50,21 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters);
 //! The same without the rate supremum (steering_rate_per_meter stays 0): the invariant sets only.
 ChainBounds compute_invariant_sets(const ControllerParameters& parameters) noexcept;
 
+//! The trigonometry of one chain state that chain_rates and front_angle_derivatives read. Both
+//! are affine in kappa_n at a given state, so evaluations at several lead curvatures (the
+//! governor's two, eq. governor_interval) share it.
+struct ChainTrigonometry {
+  ChainAngles tangent{};       //!< tan(delta_i), i = 1..n
+  double front_cosine = 1.0;   //!< cos(delta_1), for n >= 2
+  double second_cosine = 1.0;  //!< cos(delta_2), for n >= 2
+  double front_sine = 0.0;     //!< sin(delta_1), for n >= 2
+};
+ChainTrigonometry chain_trigonometry(const ChainAngles& delta, int order) noexcept;
+
 //! d delta_i / ds for i = 1..n (derivatives with respect to the REAR arc length s).
 void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
+                 double lead_curvature, ChainAngles& rates) noexcept;
+void chain_rates(const ChainTrigonometry& trigonometry, const double* wheelbases, int order,
                  double lead_curvature, ChainAngles& rates) noexcept;
 
 //! First and second derivative of delta_1 with respect to s. The second derivative exists for
@@ -58,6 +75,9 @@ struct FrontAngleDerivatives {
 };
 FrontAngleDerivatives front_angle_derivatives(const ChainAngles& delta, const double* wheelbases,
                                               int order, double lead_curvature) noexcept;
+FrontAngleDerivatives front_angle_derivatives(const ChainTrigonometry& trigonometry,
+                                              const double* wheelbases, int order,
+                                              double lead_curvature) noexcept;
 
 //! Pose of every wheel of the chain, from the rear-axle pose.
 struct ChainGeometry {
