@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/parameter_fields.hpp"
+#include "smoothsteer/controller/steering_governor.hpp"
 
 namespace smoothsteer::python {
 namespace {
@@ -162,6 +163,20 @@ void bind_controller(py::module_& m) {
                      "friction limit mu g the authority is derived from [m/s^2]")
       .def_readwrite("certified_switching_bound", &G::certified_switching_bound,
                      "the near-path law's authority [1/m]; 0 = kbar_sw");
+
+  // The governor's equations (steering_governor.hpp), for studies of its authority.
+  m.def("governed_law_length", &governed_law_length, py::arg("parameters"), py::arg("speed_mps"),
+        py::arg("heading_error_rad"),
+        "Eq. (governed_law_length): the far law's length l(v, psi) [m] (docs/governor.md).");
+  m.def("governed_feedforward_rate", &governed_feedforward_rate, py::arg("parameters"),
+        py::arg("speed_mps"),
+        "Eq. (governed_feedforward_rate): R / (lambda_veh |v|) [1/m^2], the rate at which the "
+        "governed feedforward may move; +inf at standstill.");
+  m.def("governed_reversal_curvature", &governed_reversal_curvature, py::arg("parameters"),
+        py::arg("speed_mps"), "Eq. (governed_reversal): the far law's largest authority [1/m].");
+  m.def("governed_parameters", &governed_parameters, py::arg("certified"), py::arg("speed_mps"),
+        "Eq. (governed_authority): the parameters the governor widens a schedule entry to.");
+  m.attr("governed_reversal_heading_rad") = governed_reversal_heading_rad;
 
   // The groups, each a class of its own: p.chain.order, p.single_track.preview_time_s, ...
   py::class_<ChainParameters>(m, "ChainParameters", "The fictive trailer chain (ChainParameters).")

@@ -53,3 +53,28 @@ def test_held_command_keeps_the_limits_from_engagement_errors():
         message = f"seed {seed}: R={rate} A={acceleration} v={speed}"
         assert rates.max() <= rate * (1 + 1e-9), message
         assert accelerations.max() <= acceleration * (1 + 1e-9), message
+
+
+def test_governor_equations_from_python():
+    """Eq. (governed_law_length) grows as sqrt(2 v lambda_veh |psi| / R) above its floor and is
+    0.7 sqrt(v lambda_veh / R) at the reversal heading; eq. (governed_feedforward_rate) steers at
+    R; the widened parameters keep the certified switching authority."""
+    parameters = governed_parameters(0.4, 8.0)
+    parameters.governor.law_length_m = 0.0
+    wheelbase = parameters.chain.vehicle_wheelbase_m
+    speed = 15.0
+    floor = max(sum(parameters.chain.wheelbases_m[:2]), 1.0 + 0.25 * speed)
+    for heading in (0.0, 0.05, 0.1, 0.3):
+        expected = max(floor, np.sqrt(2.0 * speed * wheelbase * heading / 0.4))
+        assert ss.governed_law_length(parameters, speed, heading) == pytest.approx(expected)
+        assert ss.governed_law_length(parameters, speed, -heading) == \
+            ss.governed_law_length(parameters, speed, heading)
+    reversal = ss.governed_law_length(parameters, speed, ss.governed_reversal_heading_rad)
+    assert reversal == pytest.approx(max(floor, 0.7 * np.sqrt(speed * wheelbase / 0.4)))
+    rate = ss.governed_feedforward_rate(parameters, speed)
+    assert wheelbase * speed * rate == pytest.approx(0.4)
+    assert np.isinf(ss.governed_feedforward_rate(parameters, 0.0))
+    widened = ss.governed_parameters(parameters, speed)
+    assert widened.chain.lead_curvature_bound >= parameters.chain.lead_curvature_bound
+    assert widened.governor.certified_switching_bound > 0.0
+    assert ss.governed_reversal_curvature(parameters, speed) > 0.0
