@@ -102,9 +102,18 @@ double jump_plan_deviation(const JumpPlan& plan, double arc_length_m) noexcept {
   return plan.sign * (value - (x >= 0.0 ? plan.height : 0.0));
 }
 
+double kink_rounding(double slope_step, double width_m, double offset_m) noexcept {
+  const double half = 0.5 * width_m;
+  if (!(width_m > 0.0) || std::abs(offset_m) >= half) return 0.0;
+  // The average of slope_step * max(x, 0) over [x - w / 2, x + w / 2], minus the kink itself.
+  const double reach = offset_m + half;
+  return slope_step * (reach * reach / (2.0 * width_m) - std::max(offset_m, 0.0));
+}
+
 CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
                                         double feedforward_rate, double feedforward_bound,
-                                        const double* wheelbases, int order) noexcept {
+                                        const double* wheelbases, int order,
+                                        double kink_rate) noexcept {
   const double rate = jump_plan_rate_margin * feedforward_rate;
   const double bound = jump_plan_bound_margin * feedforward_bound;
   const int stages = std::clamp(order, 1, 2);
@@ -153,6 +162,33 @@ CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
     }
     return total;
   };
+  // The planned kinks: a step D of the curvature's slope makes the chain inverse's lead curvature
+  // step by about m D (m = sum lambda_i), which the feedforward can only ramp at `rate`. The
+  // smooth part is therefore rounded over w = m |D| / rate around each kink, centred on it: its
+  // average over a window of width w, the parabolic blend kink_rounding() adds. Outside +-w / 2
+  // the path is unchanged.
+  const auto& kinks = path.curvature_kinks();
+  const double rounding_rate =
+      jump_plan_rate_margin *
+      (std::isfinite(kink_rate) && kink_rate > 0.0 ? kink_rate : feedforward_rate);
+  const double half_window =
+      0.5 * reach * path.max_abs_curvature_kink() / std::max(rounding_rate, 1e-9);
+  auto rounding = [&](double s) {
+    double total = 0.0;
+    if (kinks.empty()) return total;
+    for (int lap = -laps; lap <= laps; ++lap) {
+      const double shift = lap * length;
+      auto it = std::lower_bound(
+          kinks.begin(), kinks.end(), s - half_window - shift,
+          [](const Path::CurvatureKink& k, double at) { return k.arc_length_m < at; });
+      for (; it != kinks.end() && it->arc_length_m + shift <= s + half_window; ++it) {
+        const double step = it->after - it->before;
+        total += kink_rounding(step, reach * std::abs(step) / std::max(rounding_rate, 1e-9),
+                               s - (it->arc_length_m + shift));
+      }
+    }
+    return total;
+  };
   auto smooth = [&](double s) {
     const double index = std::floor(s / spacing);
     const auto i = static_cast<long>(index);
@@ -162,7 +198,7 @@ CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
     for (int p = 0; p < count; ++p) {
       if (plans[p].at_m > s0 && plans[p].at_m <= s1) k = s < plans[p].at_m ? k0 : k1;
     }
-    return k - steps_at(s);
+    return k - steps_at(s) + rounding(s);
   };
   auto jumps_part = [&](double s) {
     double deviation = 0.0;

@@ -197,7 +197,8 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   // vehicle").
   CurvatureJet jet = planned ? planned_rear_curvature_jet(
                                    *path_, s, rate, parameters_.feedforward_curvature_bound(),
-                                   parameters_.chain.wheelbases_m.data(), parameters_.chain.order)
+                                   parameters_.chain.wheelbases_m.data(), parameters_.chain.order,
+                                   feedforward_rate_)
                              : curvature_jet(curvature.before, curvature.at, curvature.after);
   jet.value = dynamics_.gain * jet.value + dynamics_.bend_m2 * jet.bend;
   jet.slope *= dynamics_.gain;
@@ -324,6 +325,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
                           governed_feedforward_rate(parameters_, speed_magnitude))
                : parameters_.feedforward.curvature_rate;
   const double feedforward_step = step_length > 0.0 ? feedforward_rate * step_length : 0.0;
+  feedforward_rate_ = feedforward_rate;
   GovernorStep governor_step;
   if (governed) {
     const double period_speed_change =

@@ -290,6 +290,28 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   for (std::size_t i = 1; i < pieces.size(); ++i)
     add_jump(pieces[i].s0, end_curvature(pieces[i - 1]), start_curvature(pieces[i]));
   if (!closed) add_jump(path.length_, end_curvature(pieces.back()), 0.0);
+  // Slope steps at the joints of lines, arcs and clothoids (a cubic piece's slope is that of a
+  // smooth curve, and its joints are not listed).
+  auto slope = [](const PathSegment& p) {
+    return p.kind == PathSegment::Kind::clothoid ? p.curvature_rate : 0.0;
+  };
+  auto cubic = [](const PathSegment& p) { return p.kind == PathSegment::Kind::cubic; };
+  auto add_kink = [&path](double at, double before, double after) {
+    if (std::abs(after - before) > min_curvature_kink) {
+      path.curvature_kinks_.push_back({at, before, after});
+      path.max_abs_curvature_kink_ =
+          std::max(path.max_abs_curvature_kink_, std::abs(after - before));
+    }
+  };
+  if (!cubic(pieces.front()) && (!closed || !cubic(pieces.back()))) {
+    add_kink(0.0, closed ? slope(pieces.back()) : 0.0, slope(pieces.front()));
+  }
+  for (std::size_t i = 1; i < pieces.size(); ++i) {
+    if (!cubic(pieces[i - 1]) && !cubic(pieces[i])) {
+      add_kink(pieces[i].s0, slope(pieces[i - 1]), slope(pieces[i]));
+    }
+  }
+  if (!closed && !cubic(pieces.back())) add_kink(path.length_, slope(pieces.back()), 0.0);
   return path;
 }
 

@@ -12,6 +12,7 @@
 
 #include "smoothsteer/controller/jump_plan.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/path/path_builder.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 #include "support/random_setup.hpp"
 
@@ -144,6 +145,102 @@ TEST(JumpPlan, WithoutJumpsTheRearTargetIsThePathsOwnCurvature) {
       // lagging the path by the chain's reach instead would be off by tens of per cent.)
       EXPECT_NEAR(jet.value, here, 0.05 * largest) << "s = " << s;
       EXPECT_NEAR(jet.slope, (ahead - behind) / (2.0 * h), 0.05 * largest) << "s = " << s;
+    }
+  }
+}
+
+TEST(PlannedKinks, RoundingIsTheWindowAverageOfTheKink) {
+  // kink_rounding(D, w, x) is the average of D max(u, 0) over [x - w / 2, x + w / 2] minus
+  // D max(x, 0): compared with a 2001-point trapezoid rule; zero outside the window, continuous at
+  // its ends, largest (D w / 8) at the kink.
+  const int cases = property_cases(200);
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = case_seed(k);
+    Random random(seed + 511);
+    const double step = random.uniform(-0.05, 0.05);
+    const double width = random.uniform(0.1, 20.0);
+    const double offset = random.uniform(-width, width);
+    SCOPED_TRACE(seed_message(seed) + " D=" + std::to_string(step) + " w=" + std::to_string(width) +
+                 " x=" + std::to_string(offset));
+    constexpr int n = 2000;
+    double average = 0.0;
+    for (int q = 0; q <= n; ++q) {
+      const double u = offset - 0.5 * width + width * q / n;
+      average += (q == 0 || q == n ? 0.5 : 1.0) * step * std::max(u, 0.0);
+    }
+    average /= n;
+    const double expected =
+        std::abs(offset) < 0.5 * width ? average - step * std::max(offset, 0.0) : 0.0;
+    EXPECT_NEAR(kink_rounding(step, width, offset), expected, 1e-6 * std::abs(step) * width);
+  }
+  EXPECT_DOUBLE_EQ(kink_rounding(0.01, 4.0, 0.0), 0.01 * 4.0 / 8.0);
+  EXPECT_NEAR(kink_rounding(0.01, 4.0, 1.999999), 0.0, 1e-9);
+  EXPECT_NEAR(kink_rounding(0.01, 4.0, -1.999999), 0.0, 1e-9);
+  EXPECT_EQ(kink_rounding(0.01, 0.0, 0.0), 0.0);
+}
+
+TEST(PlannedKinks, PathListsTheSlopeStepsOfClothoidJoints) {
+  // line -> clothoid -> arc -> clothoid -> line: four kinks with the clothoids' sharpness; a
+  // spline lists none.
+  const Path path = PathBuilder({0.0, 0.0}, 0.0)
+                        .line(20.0)
+                        .clothoid(6.0, 1.0 / 12.0)
+                        .arc(12.0, 1.0)
+                        .clothoid(6.0, 0.0)
+                        .line(20.0)
+                        .build();
+  const auto& kinks = path.curvature_kinks();
+  ASSERT_EQ(kinks.size(), 4u);
+  const double sharpness = 1.0 / (12.0 * 6.0);
+  EXPECT_NEAR(kinks[0].arc_length_m, 20.0, 1e-9);
+  EXPECT_NEAR(kinks[0].after - kinks[0].before, sharpness, 1e-9);
+  EXPECT_NEAR(kinks[1].after - kinks[1].before, -sharpness, 1e-9);
+  EXPECT_NEAR(kinks[2].after - kinks[2].before, -sharpness, 1e-9);
+  EXPECT_NEAR(kinks[3].after - kinks[3].before, sharpness, 1e-9);
+  EXPECT_NEAR(path.max_abs_curvature_kink(), sharpness, 1e-9);
+  Random random(512);
+  EXPECT_TRUE(random_path(random, PathKind::waypoints, 0.05)->curvature_kinks().empty());
+}
+
+TEST(PlannedKinks, TheRearTargetRampsTheKinkAtTheFeedforwardsRate) {
+  // Line, clothoid, arc, clothoid, line (no curvature jumps): the planned rear target is the
+  // path's curvature with each kink rounded over w = m |D| / (0.95 L) (m = sum lambda_i), so that
+  // the chain inverse's step m D becomes a ramp at the feedforward's rate L; away from the kinks
+  // it is the path's own. The slope of the rounded curvature stays within |D| of the path's.
+  const int cases = property_cases(20);
+  for (int k = 0; k < cases; ++k) {
+    const std::uint64_t seed = case_seed(k);
+    Random random(seed + 513);
+    const double length = random.uniform(4.0, 15.0);
+    const double end = random.uniform(0.02, 0.15);
+    const Path path = PathBuilder({0.0, 0.0}, 0.0)
+                          .line(40.0)
+                          .clothoid(length, end)
+                          .arc(1.0 / end, 0.6)
+                          .clothoid(length, 0.0)
+                          .line(40.0)
+                          .build();
+    ASSERT_TRUE(path.curvature_jumps().empty());
+    const double wheelbases[2] = {random.uniform(1.0, 3.0), random.uniform(0.1, 1.0)};
+    const double rate = random.uniform(0.005, 0.05);
+    const double reach = wheelbases[0] + wheelbases[1];
+    SCOPED_TRACE(seed_message(seed) + " clothoid " + std::to_string(length) + " m to " +
+                 std::to_string(end) + " 1/m, L = " + std::to_string(rate));
+    for (int i = 0; i < 40; ++i) {
+      const double s = random.uniform(10.0, path.length() - 10.0);
+      const CurvatureJet jet =
+          planned_rear_curvature_jet(path, s, rate, 2.0 * end, wheelbases, 2, rate);
+      double expected = path.evaluate(s).curvature;
+      for (const Path::CurvatureKink& kink : path.curvature_kinks()) {
+        const double step = kink.after - kink.before;
+        expected += kink_rounding(step, reach * std::abs(step) / (jump_plan_rate_margin * rate),
+                                  s - kink.arc_length_m);
+      }
+      // The samples (h = 0.5 m apart), linearly interpolated, cut a kink between two of them
+      // by at most |D| h / 4.
+      const double tolerance =
+          0.25 * path.curvature_sample_spacing_m() * path.max_abs_curvature_kink() + 1e-12;
+      EXPECT_NEAR(jet.value, expected, tolerance) << "s = " << s;
     }
   }
 }

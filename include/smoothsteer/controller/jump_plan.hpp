@@ -50,14 +50,22 @@ JumpPlan plan_jump(const Path::CurvatureJump& jump, double rate, double bound, d
 //! plan - step at arc length s [1/m]: zero outside [at + x[0], max(at, at + x[3])].
 double jump_plan_deviation(const JumpPlan& plan, double arc_length_m) noexcept;
 
+//! The rounding of a kink (a step `slope_step` of the curvature's slope, Path::CurvatureKink) over
+//! a centred window of `width_m`, at `offset_m` from it [1/m]: the curvature averaged over the
+//! window minus the curvature itself, slope_step ((x + w / 2)^2 / (2 w) - max(x, 0)) for |x| < w /
+//! 2 and 0 outside. Its largest value, at the kink, is slope_step w / 8.
+double kink_rounding(double slope_step, double width_m, double offset_m) noexcept;
+
 //! The rear axle's curvature jet at arc length s when the lead wheel follows the planned
-//! curvature: the path's curvature with every jump within reach replaced by its plan (rate
+//! curvature: the path's curvature with every kink rounded over m |D| / rate (kink_rounding,
+//! m = sum lambda_i) and every jump within reach replaced by its plan (rate
 //! jump_plan_rate_margin L_ff, extremes within jump_plan_bound_margin kbar_ff), passed through
 //! the chain's linearised lags over the last 8 max lambda_i metres (exact for inputs linear over
 //! each 0.25 m step). Its chain inverse (invert_chain) is the plan again. Orders 1 and 2; no
 //! allocation; O(log jumps + 8 max lambda_i / 0.25 m).
 CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
                                         double feedforward_rate, double feedforward_bound,
-                                        const double* wheelbases, int order) noexcept;
+                                        const double* wheelbases, int order,
+                                        double kink_rate = 0.0) noexcept;
 
 }  // namespace smoothsteer

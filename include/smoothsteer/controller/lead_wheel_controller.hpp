@@ -141,7 +141,10 @@ class LeadWheelController final : public SteeringController {
   double governor_rate_ = 0.0;
   double feedforward_envelope_ = 0.0;  //!< decaying max of |kappa_ff| (the far law's authority)
   double far_share_ = 0.0;             //!< weight of the far law in kappa_sw, in [0, 1]
-  double heading_envelope_ = 0.0;      //!< decaying max of the lead wheel's |heading error| [rad]
+  double heading_envelope_ = 0.0;
+  //! The rate kappa_ff moves at in this period [1/m^2] (L_ff, or the governor's), for the kinks'
+  //! rounding (jump_plan.hpp).
+  double feedforward_rate_ = 0.0;  //!< decaying max of the lead wheel's |heading error| [rad]
   double previous_speed_ = -1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;

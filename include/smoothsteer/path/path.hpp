@@ -121,6 +121,21 @@ class Path {
   //! The path's curvature steps, sorted by arc length, built once with the path (a closed
   //! path's joint at s = 0 is listed there).
   const std::vector<CurvatureJump>& curvature_jumps() const noexcept { return curvature_jumps_; }
+  //! A step of the curvature's slope where a line, an arc or a clothoid meets another (a
+  //! clothoid's start or end), or an open path's end against its straight extension
+  //! (docs/feedforward.md, section 2b: the planned kinks). Joints of cubic spline pieces are
+  //! not listed: their slope steps are those of a smooth curve.
+  struct CurvatureKink {
+    double arc_length_m = 0.0;  //!< where the step is [m]
+    double before = 0.0;        //!< d curvature / ds just before it [1/m^2]
+    double after = 0.0;         //!< d curvature / ds just after it [1/m^2]
+  };
+  //! Slope steps smaller than this are not kinks [1/m^2].
+  static constexpr double min_curvature_kink = 1e-7;
+  //! The path's kinks, sorted by arc length, built once with the path.
+  const std::vector<CurvatureKink>& curvature_kinks() const noexcept { return curvature_kinks_; }
+  //! The largest |after - before| of curvature_kinks() [1/m^2], 0 without kinks.
+  double max_abs_curvature_kink() const noexcept { return max_abs_curvature_kink_; }
 
   //! Position, heading and curvature at arc length s (wrapped if closed, extended if open).
   PathPoint evaluate(double arc_length_m) const noexcept;
@@ -186,6 +201,8 @@ class Path {
   double curvature_spacing_ = curvature_sample_spacing;
   std::vector<double> curvature_samples_;
   std::vector<CurvatureJump> curvature_jumps_;
+  std::vector<CurvatureKink> curvature_kinks_;
+  double max_abs_curvature_kink_ = 0.0;
 };
 
 }  // namespace smoothsteer
