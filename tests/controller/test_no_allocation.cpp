@@ -62,10 +62,16 @@ TEST(RealTime, UpdateDoesNotAllocate) {
 TEST(RealTime, PlannedJumpsUpdateDoesNotAllocate) {
   PathBuilder builder({0.0, 0.0}, 0.0);
   builder.line(20.0);
-  for (int k = 0; k < 60; ++k) builder.arc(k % 3 == 0 ? 40.0 : 25.0, k % 2 == 0 ? 0.05 : -0.05);
+  // Arcs meeting with curvature jumps, and clothoids between some of them: planned jumps and
+  // planned kinks (jump_plan.hpp) within reach at once.
+  for (int k = 0; k < 60; ++k) {
+    builder.arc(k % 3 == 0 ? 40.0 : 25.0, k % 2 == 0 ? 0.05 : -0.05);
+    if (k % 4 == 1) builder.clothoid(4.0, 0.0);
+  }
   builder.line(50.0);
   auto path = std::make_shared<const Path>(builder.build());
-  ASSERT_GT(path->curvature_jumps().size(), 50u);
+  ASSERT_GT(path->curvature_jumps().size(), 40u);
+  ASSERT_GT(path->curvature_kinks().size(), 20u);
   for (int order = 1; order <= 2; ++order) {
     ControllerParameters parameters;
     parameters.chain.order = order;
