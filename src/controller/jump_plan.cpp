@@ -169,10 +169,10 @@ CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
   // the path is unchanged.
   const auto& kinks = path.curvature_kinks();
   const double rounding_rate =
-      jump_plan_rate_margin *
-      (std::isfinite(kink_rate) && kink_rate > 0.0 ? kink_rate : feedforward_rate);
-  const double half_window =
-      0.5 * reach * path.max_abs_curvature_kink() / std::max(rounding_rate, 1e-9);
+      std::max(jump_plan_rate_margin *
+                   (std::isfinite(kink_rate) && kink_rate > 0.0 ? kink_rate : feedforward_rate),
+               1e-9);
+  const double half_window = 0.5 * reach * path.max_abs_curvature_kink() / rounding_rate;
   auto rounding = [&](double s) {
     double total = 0.0;
     if (kinks.empty()) return total;
@@ -183,7 +183,7 @@ CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
           [](const Path::CurvatureKink& k, double at) { return k.arc_length_m < at; });
       for (; it != kinks.end() && it->arc_length_m + shift <= s + half_window; ++it) {
         const double step = it->after - it->before;
-        total += kink_rounding(step, reach * std::abs(step) / std::max(rounding_rate, 1e-9),
+        total += kink_rounding(step, reach * std::abs(step) / rounding_rate,
                                s - (it->arc_length_m + shift));
       }
     }

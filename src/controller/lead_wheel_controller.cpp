@@ -161,7 +161,8 @@ double LeadWheelController::vehicle_steering_angle_of_chain() const noexcept {
   return vehicle_steering_angle(angles_[0]);
 }
 
-TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const noexcept {
+TargetCurve LeadWheelController::target_curve(const PathProjection& lead,
+                                              double feedforward_rate) const noexcept {
   // The path's curvature as the rate-limited feedforward should see it (feedforward.hpp): with a
   // finite L_ff the previewed samples (a jump becomes a ramp centred on it), else the path at s
   // and +- one step. The exact rear-axle target reads it at the rear axle, a chain's reach
@@ -195,10 +196,10 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
   // correction on top of the preview; then, with a plant disturbance kappa_d, the chain runs on
   // kappa - kappa_d while the rear axle follows kappa (docs/feedforward.md, "disturbances on the
   // vehicle").
-  CurvatureJet jet = planned ? planned_rear_curvature_jet(
-                                   *path_, s, rate, parameters_.feedforward_curvature_bound(),
-                                   parameters_.chain.wheelbases_m.data(), parameters_.chain.order,
-                                   feedforward_rate_)
+  CurvatureJet jet = planned ? planned_rear_curvature_jet(*path_, s, rate,
+                                                          parameters_.feedforward_curvature_bound(),
+                                                          parameters_.chain.wheelbases_m.data(),
+                                                          parameters_.chain.order, feedforward_rate)
                              : curvature_jet(curvature.before, curvature.at, curvature.after);
   jet.value = dynamics_.gain * jet.value + dynamics_.bend_m2 * jet.bend;
   jet.slope *= dynamics_.gain;
@@ -231,7 +232,7 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead) const 
 
 LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
     Vec2 rear_position, double rear_travel_heading, bool refresh_target, double switching_bound,
-    double boundary_layer) noexcept {
+    double boundary_layer, double feedforward_rate) noexcept {
   // Lead-wheel state from projecting its own position (paper Sec. II end, paper_notes §6).
   const int n = parameters_.chain.order;
   ChainGeometry geometry;
@@ -243,7 +244,7 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
   // point; the other sub-steps only need e and the heading (and skip the quadrature on splines).
   const Path::ProjectionOptions lead_options{.compute_arc_length = refresh_target};
   state.projection = path_->project(geometry.position[lead], lead_hint_, lead_options);
-  if (refresh_target) target_ = target_curve(state.projection);
+  if (refresh_target) target_ = target_curve(state.projection, feedforward_rate);
   const double path_heading = wrap_angle(geometry.heading[lead] - state.projection.heading_rad);
   const double error = state.projection.lateral_error_m - target_.offset;
   state.relative_heading = wrap_angle(path_heading - target_.heading);
@@ -325,7 +326,6 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
                           governed_feedforward_rate(parameters_, speed_magnitude))
                : parameters_.feedforward.curvature_rate;
   const double feedforward_step = step_length > 0.0 ? feedforward_rate * step_length : 0.0;
-  feedforward_rate_ = feedforward_rate;
   GovernorStep governor_step;
   if (governed) {
     const double period_speed_change =
@@ -371,7 +371,8 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
     const double law_layer =
         governed ? 0.5 * law_length * law_bound : parameters_.law.boundary_layer;
     const double catch_up = parameters_.feedforward.catch_up * law_bound;
-    LeadWheelState lead = evaluate_lead_wheel(position, heading, step == 0, law_bound, law_layer);
+    LeadWheelState lead =
+        evaluate_lead_wheel(position, heading, step == 0, law_bound, law_layer, feedforward_rate);
     if (governed) {
       // Near the path the certified law steers (its authority and boundary layer, as the split
       // certificate tuned them). The decisive far law takes over as the certified law's sliding

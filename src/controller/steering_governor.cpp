@@ -111,10 +111,11 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
     const double gain = jacobian.gain;
     const double front_rate = std::abs(previous) / (v * gain);  // |delta_1'| [rad/m]
     const double cosine = std::cos(front);
-    const double drift = v * (std::abs(vehicle_angle_gain_slope(front, ratio)) / gain * front_rate +
-                              (parameters.chain.lead_curvature_bound * std::abs(std::sin(front)) +
-                               1.0 / parameters.chain.wheelbases_m[0]) /
-                                  (cosine * cosine));
+    const double drift =
+        v * (std::abs(vehicle_angle_gain_slope(front, ratio, gain)) / gain * front_rate +
+             (parameters.chain.lead_curvature_bound * std::abs(std::sin(front)) +
+              1.0 / parameters.chain.wheelbases_m[0]) /
+                 (cosine * cosine));
     const double reserve = (step.longitudinal_acceleration / v + drift) * std::abs(previous);
     const double change = std::max(0.0, acceleration_limit - reserve) * h;
     double low = std::max(-rate_limit, previous - change);

@@ -92,11 +92,19 @@ ChainBounds compute_chain_bounds(const ControllerParameters& parameters) {
   return bounds;
 }
 
+namespace {
+
+ChainAngles chain_tangents(const ChainAngles& delta, int order) noexcept {
+  ChainAngles tangent{};
+  for (std::size_t k = 0; k < static_cast<std::size_t>(order); ++k) tangent[k] = std::tan(delta[k]);
+  return tangent;
+}
+
+}  // namespace
+
 ChainTrigonometry chain_trigonometry(const ChainAngles& delta, int order) noexcept {
   ChainTrigonometry result;
-  for (std::size_t k = 0; k < static_cast<std::size_t>(order); ++k) {
-    result.tangent[k] = std::tan(delta[k]);
-  }
+  result.tangent = chain_tangents(delta, order);
   if (order >= 2) {
     result.front_cosine = std::cos(delta[0]);
     result.front_sine = std::sin(delta[0]);
@@ -122,11 +130,9 @@ void chain_rates(const ChainTrigonometry& trigonometry, const double* wheelbases
 
 void chain_rates(const ChainAngles& delta, const double* wheelbases, int order,
                  double lead_curvature, ChainAngles& rates) noexcept {
-  // One tan per angle (chain_trigonometry's front terms are for n >= 2 only).
+  // One tan per angle: the RK4 stages need no cos or sin (chain_trigonometry's front terms).
   ChainTrigonometry trigonometry;
-  for (std::size_t k = 0; k < static_cast<std::size_t>(order); ++k) {
-    trigonometry.tangent[k] = std::tan(delta[k]);
-  }
+  trigonometry.tangent = chain_tangents(delta, order);
   chain_rates(trigonometry, wheelbases, order, lead_curvature, rates);
 }
 

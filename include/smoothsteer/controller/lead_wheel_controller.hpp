@@ -96,12 +96,14 @@ class LeadWheelController final : public SteeringController {
     SwitchingResult law;              //!< the switching part kappa_sw
   };
   //! refresh_target: recompute target_ at this projection (once per period, the first sub-step).
-  //! The switching part has authority switching_bound and boundary layer boundary_layer.
+  //! The switching part has authority switching_bound and boundary layer boundary_layer;
+  //! feedforward_rate is the rate kappa_ff moves at in this period (L_ff, or the governor's).
   LeadWheelState evaluate_lead_wheel(Vec2 rear_position, double rear_travel_heading,
                                      bool refresh_target, double switching_bound,
-                                     double boundary_layer) noexcept;
-  //! The curve the lead wheel tracks near its closest point (feedforward.hpp).
-  TargetCurve target_curve(const PathProjection& lead) const noexcept;
+                                     double boundary_layer, double feedforward_rate) noexcept;
+  //! The curve the lead wheel tracks near its closest point (feedforward.hpp); the planned kinks
+  //! are rounded for kappa_ff moving at feedforward_rate (jump_plan.hpp).
+  TargetCurve target_curve(const PathProjection& lead, double feedforward_rate) const noexcept;
   //! Sets the parameters and what derives from them (bounds, sum lambda_i^2, sub-step length).
   void apply_parameters(const ControllerParameters& parameters) noexcept;
   //! Heading of the direction of travel: psi, or psi + pi while reversing.
@@ -141,10 +143,7 @@ class LeadWheelController final : public SteeringController {
   double governor_rate_ = 0.0;
   double feedforward_envelope_ = 0.0;  //!< decaying max of |kappa_ff| (the far law's authority)
   double far_share_ = 0.0;             //!< weight of the far law in kappa_sw, in [0, 1]
-  double heading_envelope_ = 0.0;
-  //! The rate kappa_ff moves at in this period [1/m^2] (L_ff, or the governor's), for the kinks'
-  //! rounding (jump_plan.hpp).
-  double feedforward_rate_ = 0.0;  //!< decaying max of the lead wheel's |heading error| [rad]
+  double heading_envelope_ = 0.0;      //!< decaying max of the lead wheel's |heading error| [rad]
   double previous_speed_ = -1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;
