@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bindings.hpp"
@@ -107,6 +108,25 @@ void bind_path(py::module_& m) {
       .def_property_readonly("segment_count", &Path::segment_count)
       .def_property_readonly("max_abs_curvature", &Path::max_abs_curvature,
                              "largest |curvature| [1/m]")
+      .def_property_readonly(
+          "curvature_jumps",
+          [](const Path& path) {
+            std::vector<std::tuple<double, double, double>> jumps;
+            for (const Path::CurvatureJump& j : path.curvature_jumps())
+              jumps.emplace_back(j.arc_length_m, j.before, j.after);
+            return jumps;
+          },
+          "the steps of the curvature (s [m], before, after [1/m]): the planned jumps' input")
+      .def_property_readonly(
+          "curvature_kinks",
+          [](const Path& path) {
+            std::vector<std::tuple<double, double, double>> kinks;
+            for (const Path::CurvatureKink& k : path.curvature_kinks())
+              kinks.emplace_back(k.arc_length_m, k.before, k.after);
+            return kinks;
+          },
+          "the steps of the curvature's slope at line, arc and clothoid joints (s [m], before, "
+          "after [1/m^2]): the planned kinks' input (docs/feedforward.md, section 2b)")
       .def("evaluate", &Path::evaluate, py::arg("arc_length_m"),
            "PathPoint at arc length s [m] (wrapped if closed, extended along the tangent if open).")
       .def("sample", &sample, py::arg("arc_length_m"),

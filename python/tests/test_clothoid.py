@@ -2,6 +2,7 @@
 import math
 
 import numpy as np
+import pytest
 
 import smoothsteer as ss
 
@@ -23,3 +24,17 @@ def test_clothoid_bend_has_continuous_curvature_and_turns_as_designed():
     assert np.max(np.abs(np.diff(curvature))) < 1.1 * (1.0 / radius) / transition * (
         path.length_m / 4000)
     assert abs(np.max(curvature) - 1.0 / radius) < 1e-12
+
+
+def test_clothoid_joints_are_kinks_and_splines_have_none():
+    """Path.curvature_kinks lists the clothoid's slope steps (docs/feedforward.md section 2b);
+    a line-clothoid-arc path has no curvature jump, a waypoint spline no kink."""
+    path = ss.PathBuilder((0.0, 0.0), 0.0).line(20.0).clothoid(6.0, 1.0 / 12.0) \
+        .arc(12.0, 1.0).build()
+    assert path.curvature_jumps == [(pytest.approx(path.length_m), pytest.approx(1.0 / 12.0), 0.0)]
+    kinks = path.curvature_kinks
+    assert [k[0] for k in kinks] == [pytest.approx(20.0), pytest.approx(26.0)]
+    assert kinks[0][2] - kinks[0][1] == pytest.approx(1.0 / 72.0)
+    assert kinks[1][2] - kinks[1][1] == pytest.approx(-1.0 / 72.0)
+    spline = ss.Path.from_waypoints([[0, 0], [20, 2], [40, -2], [60, 0]])
+    assert spline.curvature_kinks == []
