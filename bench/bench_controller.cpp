@@ -55,6 +55,7 @@ enum class Law {
   exact,     //!< the same with the exact rear-axle target and the single-track inversion
   planned,   //!< the same with the planned curvature jumps (jump_plan.hpp)
   governed,  //!< the exact target with the steering governor (docs/governor.md), the car's limits
+  shipped,   //!< as the shipped scenarios: the governor with planned jumps and its derived length
   paper,     //!< the paper's law: no feedforward, the lead wheel on the path
 };
 
@@ -62,21 +63,23 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
   ControllerParameters parameters;
   parameters.chain.order = order;
   parameters.chain.lead_curvature_bound = 0.1;
-  if (law == Law::preview || law == Law::exact || law == Law::planned || law == Law::governed) {
+  const bool governed = law == Law::governed || law == Law::shipped;
+  if (law == Law::preview || law == Law::exact || law == Law::planned || governed) {
     parameters.feedforward.curvature_rate = 0.005;
   }
-  if (law == Law::exact || law == Law::planned || law == Law::governed) {
+  if (law == Law::exact || law == Law::planned || governed) {
     parameters.feedforward.cornering_target = CorneringTarget::rear_axle_exact;
     parameters.single_track = {
         .enabled = true, .rear_slip_gradient_s2pm = 0.00465, .front_slip_gradient_s2pm = 0.00465};
   }
-  if (law == Law::planned)
+  if (law == Law::planned || law == Law::shipped)
     parameters.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
-  if (law == Law::governed && order >= 1 && order <= 2) {
+  if (governed && order >= 1 && order <= 2) {
     parameters.governor.enabled = true;
     parameters.governor.max_steering_rate_radps = 0.4;
     parameters.governor.max_steering_acceleration_radps2 = 8.0;
-    parameters.governor.law_length_m = 6.0;
+    // The shipped scenarios derive the far law's length per sub-step (eq. governed_law_length).
+    parameters.governor.law_length_m = law == Law::shipped ? 0.0 : 6.0;
     parameters.governor.certified_switching_bound = 0.005;
   }
   if (law == Law::paper) {
@@ -121,6 +124,12 @@ void BM_UpdateCurvedPath10kPlannedJumps(benchmark::State& state) {
 void BM_UpdateCurvedPath10kGoverned(benchmark::State& state) {
   update_cost(state, curved_path(), Law::governed);
 }
+void BM_UpdateCurvedPath10kShipped(benchmark::State& state) {
+  update_cost(state, curved_path(), Law::shipped);
+}
+void BM_UpdateCircleSectionsShipped(benchmark::State& state) {
+  update_cost(state, circle_sections_path(), Law::shipped);
+}
 void BM_UpdateCircleSectionsExactTarget(benchmark::State& state) {
   update_cost(state, circle_sections_path(), Law::exact);
 }
@@ -162,6 +171,8 @@ BENCHMARK(BM_UpdateCurvedPath10kPreview)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kExactTarget)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kPlannedJumps)->Arg(1)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kGoverned)->Arg(1)->Arg(2);
+BENCHMARK(BM_UpdateCurvedPath10kShipped)->Arg(1)->Arg(2);
+BENCHMARK(BM_UpdateCircleSectionsShipped)->Arg(2);
 BENCHMARK(BM_UpdateCircleSectionsExactTarget)->Arg(2);
 BENCHMARK(BM_UpdateCircleSectionsPlannedJumps)->Arg(2);
 BENCHMARK(BM_UpdateCurvedPath10kPaperLaw)->Arg(1)->Arg(2);

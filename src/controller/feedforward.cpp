@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/math/angles.hpp"
@@ -103,25 +104,42 @@ PreviewedCurvature preview_curvature(const Path& path, double arc_length_m, doub
   const double spacing = path.curvature_sample_spacing_m();
   const long centre = std::lround(arc_length_m / spacing);
   const long offset = std::max(1L, std::lround(step_m / spacing));  // s +- step in samples
-  auto sample = [&](long index) { return std::clamp(path.curvature_sample(index), -bound, bound); };
+  // Inside [0, length()] the samples are read directly, without wrapping or the end extensions.
+  const std::span<const double> samples = path.curvature_samples();
+  auto sample = [&](long index) {
+    const bool inside = index >= 0 && index < static_cast<long>(samples.size());
+    return std::clamp(
+        inside ? samples[static_cast<std::size_t>(index)] : path.curvature_sample(index), -bound,
+        bound);
+  };
   if (!(rate_per_meter > 0.0) || !std::isfinite(rate_per_meter)) {
     return {sample(centre - offset), sample(centre), sample(centre + offset)};
   }
-  // Envelopes of the three points at once: sample j lies |j - (centre + p)| samples from point p.
+  // Envelopes of the three points (centre - offset, centre, centre + offset) in one pass.
   const double slope = 2.0 * rate_per_meter * spacing;  // per sample
   const long reach = static_cast<long>(
       std::min<double>(max_preview_samples, std::ceil(bound / (rate_per_meter * spacing))));
-  double upper[3], lower[3];
-  for (int p = 0; p < 3; ++p) upper[p] = lower[p] = sample(centre + (p - 1) * offset);
-  for (long j = centre - offset - reach; j <= centre + offset + reach; ++j) {
+  // The distances from sample j to the points are whole numbers of samples, exact in double.
+  const double gap = static_cast<double>(offset);
+  double upper_before = sample(centre - offset), upper_at = sample(centre),
+         upper_after = sample(centre + offset);
+  double lower_before = upper_before, lower_at = upper_at, lower_after = upper_after;
+  const long first = centre - offset - reach;
+  double from_centre = static_cast<double>(first - centre);
+  for (long j = first; j <= centre + offset + reach; ++j, from_centre += 1.0) {
     const double curvature = sample(j);
-    for (int p = 0; p < 3; ++p) {
-      const double distance = slope * static_cast<double>(std::labs(j - centre - (p - 1) * offset));
-      upper[p] = std::min(upper[p], curvature + distance);
-      lower[p] = std::max(lower[p], curvature - distance);
-    }
+    const double before = slope * std::abs(from_centre + gap);
+    const double at = slope * std::abs(from_centre);
+    const double after = slope * std::abs(from_centre - gap);
+    upper_before = std::min(upper_before, curvature + before);
+    upper_at = std::min(upper_at, curvature + at);
+    upper_after = std::min(upper_after, curvature + after);
+    lower_before = std::max(lower_before, curvature - before);
+    lower_at = std::max(lower_at, curvature - at);
+    lower_after = std::max(lower_after, curvature - after);
   }
-  return {0.5 * (upper[0] + lower[0]), 0.5 * (upper[1] + lower[1]), 0.5 * (upper[2] + lower[2])};
+  return {0.5 * (upper_before + lower_before), 0.5 * (upper_at + lower_at),
+          0.5 * (upper_after + lower_after)};
 }
 
 }  // namespace smoothsteer

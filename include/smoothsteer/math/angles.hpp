@@ -11,6 +11,7 @@ inline constexpr double pi = std::numbers::pi;
 
 //! Wraps an angle to (-pi, pi].
 inline double wrap_angle(double angle) noexcept {
+  if (angle > -pi && angle <= pi) return angle;  // already wrapped: remainder would return it
   double wrapped = std::remainder(angle, 2.0 * pi);
   if (wrapped <= -pi) wrapped += 2.0 * pi;
   return wrapped;

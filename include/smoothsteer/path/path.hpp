@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "smoothsteer/math/vec2.hpp"
@@ -109,6 +110,9 @@ class Path {
   double sampled_curvature(double arc_length_m) const noexcept;
   //! Sample i (wrapped if closed; 0 outside [0, length()] on open paths).
   double curvature_sample(long index) const noexcept;
+  //! All samples, sample i at s = i curvature_sample_spacing_m(): for loops over a window that
+  //! lies inside [0, length()], which need no wrapping.
+  std::span<const double> curvature_samples() const noexcept { return curvature_samples_; }
   //! A step of the curvature where two segments meet, or at an end of an open path against its
   //! straight extension (docs/feedforward.md, section 2b: the planned jumps).
   struct CurvatureJump {
