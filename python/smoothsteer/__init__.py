@@ -82,6 +82,7 @@ from ._smoothsteer import (  # noqa: F401
     governed_reversal_curvature,
     governed_reversal_heading_rad,
     parameters_for_vehicle,
+    preview_curvature,
     scenario_certificate,
     simulate_kinematic,
     solve_optimal_reaching,

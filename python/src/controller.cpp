@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bindings.hpp"
+#include "smoothsteer/controller/feedforward.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/parameter_fields.hpp"
 #include "smoothsteer/controller/steering_governor.hpp"
@@ -163,6 +165,21 @@ void bind_controller(py::module_& m) {
                      "friction limit mu g the authority is derived from [m/s^2]")
       .def_readwrite("certified_switching_bound", &G::certified_switching_bound,
                      "the near-path law's authority [1/m]; 0 = kbar_sw");
+
+  // The rate-limited curvature preview (feedforward.hpp, docs/feedforward.md section 2).
+  m.def(
+      "preview_curvature",
+      [](const Path& path, double arc_length_m, double step_m, double rate_per_meter,
+         double bound) {
+        const PreviewedCurvature c =
+            preview_curvature(path, arc_length_m, step_m, rate_per_meter, bound);
+        return std::make_tuple(c.before, c.at, c.after);
+      },
+      py::arg("path"), py::arg("arc_length_m"), py::arg("step_m"), py::arg("rate_per_meter"),
+      py::arg("bound"),
+      "The path's sampled curvature as the rate-limited feedforward sees it at s - step, s and "
+      "s + step [1/m]: the midpoint of its upper and lower envelopes of slope 2 L_ff, clamped to "
+      "+-bound; without a rate (0 or inf) the three samples.");
 
   // The governor's equations (steering_governor.hpp), for studies of its authority.
   m.def("governed_law_length", &governed_law_length, py::arg("parameters"), py::arg("speed_mps"),

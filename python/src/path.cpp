@@ -4,6 +4,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -127,6 +129,21 @@ void bind_path(py::module_& m) {
           },
           "the steps of the curvature's slope at line, arc and clothoid joints (s [m], before, "
           "after [1/m^2]): the planned kinks' input (docs/feedforward.md, section 2b)")
+      .def_property_readonly("curvature_sample_spacing_m", &Path::curvature_sample_spacing_m,
+                             "spacing of the curvature samples the feedforward's preview reads [m]")
+      .def_property_readonly(
+          "curvature_samples",
+          [](const Path& path) {
+            const std::span<const double> samples = path.curvature_samples();
+            py::array_t<double> result(static_cast<py::ssize_t>(samples.size()));
+            std::copy(samples.begin(), samples.end(), result.mutable_data());
+            return result;
+          },
+          "the curvature samples [1/m], sample i at s = i curvature_sample_spacing_m (a copy)")
+      .def("curvature_sample", &Path::curvature_sample, py::arg("index"),
+           "sample i [1/m], wrapped if closed, 0 outside [0, length] on open paths")
+      .def("sampled_curvature", &Path::sampled_curvature, py::arg("arc_length_m"),
+           "the sample nearest to arc length s [1/m]")
       .def("evaluate", &Path::evaluate, py::arg("arc_length_m"),
            "PathPoint at arc length s [m] (wrapped if closed, extended along the tangent if open).")
       .def("sample", &sample, py::arg("arc_length_m"),
