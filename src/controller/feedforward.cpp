@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/math/angles.hpp"
@@ -104,14 +103,7 @@ PreviewedCurvature preview_curvature(const Path& path, double arc_length_m, doub
   const double spacing = path.curvature_sample_spacing_m();
   const long centre = std::lround(arc_length_m / spacing);
   const long offset = std::max(1L, std::lround(step_m / spacing));  // s +- step in samples
-  // Inside [0, length()] the samples are read directly, without wrapping or the end extensions.
-  const std::span<const double> samples = path.curvature_samples();
-  auto sample = [&](long index) {
-    const bool inside = index >= 0 && index < static_cast<long>(samples.size());
-    return std::clamp(
-        inside ? samples[static_cast<std::size_t>(index)] : path.curvature_sample(index), -bound,
-        bound);
-  };
+  auto sample = [&](long index) { return std::clamp(path.curvature_sample(index), -bound, bound); };
   if (!(rate_per_meter > 0.0) || !std::isfinite(rate_per_meter)) {
     return {sample(centre - offset), sample(centre), sample(centre + offset)};
   }

@@ -328,17 +328,13 @@ double Path::sampled_curvature(double arc_length_m) const noexcept {
   return curvature_samples_[std::min(index, curvature_samples_.size() - 1)];
 }
 
-double Path::curvature_sample(long index) const noexcept {
+double Path::curvature_sample_outside(long index) const noexcept {
   const auto count = static_cast<long>(curvature_samples_.size());
-  if (count == 0) return 0.0;
-  if (closed_) {
-    // The last sample sits at s = length(), the same point as the first.
-    const long period = std::max(1L, count - 1);
-    index %= period;
-    if (index < 0) index += period;
-  } else if (index < 0 || index >= count) {
-    return 0.0;
-  }
+  if (count == 0 || !closed_) return 0.0;  // the straight end extensions
+  // The last sample sits at s = length(), the same point as the first.
+  const long period = std::max(1L, count - 1);
+  index %= period;
+  if (index < 0) index += period;
   return curvature_samples_[static_cast<std::size_t>(index)];
 }
 

@@ -108,10 +108,16 @@ class Path {
   double curvature_sample_spacing_m() const noexcept { return curvature_spacing_; }
   //! The sample nearest to arc length s (wrapped if closed; 0 on the straight end extensions).
   double sampled_curvature(double arc_length_m) const noexcept;
-  //! Sample i (wrapped if closed; 0 outside [0, length()] on open paths).
-  double curvature_sample(long index) const noexcept;
-  //! All samples, sample i at s = i curvature_sample_spacing_m(): for loops over a window that
-  //! lies inside [0, length()], which need no wrapping.
+  //! Sample i (wrapped if closed; 0 outside [0, length()] on open paths). Inline for the
+  //! previews' loops: an index inside the samples is a plain read (on a closed path the last
+  //! sample, at s = length(), is the first one's value), the rest goes out of line.
+  double curvature_sample(long index) const noexcept {
+    if (index >= 0 && index < static_cast<long>(curvature_samples_.size())) {
+      return curvature_samples_[static_cast<std::size_t>(index)];
+    }
+    return curvature_sample_outside(index);
+  }
+  //! All samples, sample i at s = i curvature_sample_spacing_m() (read-only).
   std::span<const double> curvature_samples() const noexcept { return curvature_samples_; }
   //! A step of the curvature where two segments meet, or at an end of an open path against its
   //! straight extension (docs/feedforward.md, section 2b: the planned jumps).
@@ -180,6 +186,8 @@ class Path {
   std::uint32_t build_tree(const std::vector<SegmentBox>& boxes, std::uint32_t first,
                            std::uint32_t count);
   PathProjection project_global(Vec2 point, ProjectionHint& hint) const noexcept;
+  //! curvature_sample() for an index outside the samples: wrapped if closed, else 0.
+  double curvature_sample_outside(long index) const noexcept;
   //! Distance from `point` to the start (start = true) or end extension half-line of an open
   //! path, or infinity if its closest point is not strictly on the half-line.
   double extension_distance(Vec2 point, bool start) const noexcept;
