@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -171,6 +172,20 @@ void bind_controller(py::module_& m) {
       "preview_curvature",
       [](const Path& path, double arc_length_m, double step_m, double rate_per_meter,
          double bound) {
+        // The C++ function takes its callers' finite values; from Python each is checked.
+        auto require = [](bool ok, const char* name, double value, const char* rule) {
+          if (!ok) {
+            throw py::value_error(std::string("preview_curvature: ") + name + " = " +
+                                  std::to_string(value) + " " + rule);
+          }
+        };
+        require(std::isfinite(arc_length_m) && std::abs(arc_length_m) <= 1e9, "arc_length_m",
+                arc_length_m, "must be finite, within +-1e9 m");
+        require(std::isfinite(step_m) && step_m > 0.0 && step_m <= 100.0, "step_m", step_m,
+                "must be in (0, 100] m");
+        require(rate_per_meter >= 0.0, "rate_per_meter", rate_per_meter,
+                "must be >= 0 1/m^2 (0 or inf: no rate limit)");
+        require(std::isfinite(bound) && bound > 0.0, "bound", bound, "must be finite and > 0 1/m");
         const PreviewedCurvature c =
             preview_curvature(path, arc_length_m, step_m, rate_per_meter, bound);
         return std::make_tuple(c.before, c.at, c.after);

@@ -1,7 +1,10 @@
 """The path's curvature samples and the rate-limited preview (docs/feedforward.md, section 2)
 from Python: the preview is the midpoint of the samples' envelopes of slope 2 L_ff (C++ property
 test: CurvaturePreview.IsTheRateEnvelopeOfTheSamplesAtEachPoint)."""
+import math
+
 import numpy as np
+import pytest
 
 import smoothsteer as ss
 
@@ -55,3 +58,19 @@ def test_preview_without_a_rate_reads_the_three_samples():
     centre = int(np.floor(10.2 / spacing + 0.5))
     assert (before, at, after) == (path.curvature_sample(centre - 1), path.curvature_sample(centre),
                                    path.curvature_sample(centre + 1))
+
+
+@pytest.mark.parametrize("arguments, name", [
+    ((math.nan, 0.5, 0.01, 0.1), "arc_length_m"),
+    ((1e300, 0.5, 0.01, 0.1), "arc_length_m"),
+    ((10.0, 0.0, 0.01, 0.1), "step_m"),
+    ((10.0, 1e15, 0.01, 0.1), "step_m"),
+    ((10.0, 0.5, math.nan, 0.1), "rate_per_meter"),
+    ((10.0, 0.5, -1.0, 0.1), "rate_per_meter"),
+    ((10.0, 0.5, 0.01, math.inf), "bound"),
+    ((10.0, 0.5, 0.01, 0.0), "bound"),
+])
+def test_preview_rejects_bad_arguments_by_name(arguments, name):
+    path = ss.Path.straight_line((0.0, 0.0), 0.0, 50.0)
+    with pytest.raises(ValueError, match=f"preview_curvature: {name} = "):
+        ss.preview_curvature(path, *arguments)
