@@ -133,6 +133,7 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   SideSlipDiagnostics slip;
   controller_input_ = {input.rear_axle_position, input.heading_rad, input.speed_mps,
                        input.acceleration_mps2, input.period_s};
+  controller_input_.pose_age_s = input.pose_age_s;
   controller_input_.rear_axle_side_slip_rad = rear_axle_side_slip(input, slip);
   slip.rear_axle_side_slip_rad = controller_input_.rear_axle_side_slip_rad;
   const Status status = controller_->update(controller_input_, controller_output_);

@@ -118,6 +118,12 @@ class LeadWheelController final : public SteeringController {
     return parameters_.delay_compensation.enabled ? parameters_.delay_compensation.actuator_delay_s
                                                   : 0.0;
   }
+  //! How far back the pose's information lies behind the moment this command takes effect [s]:
+  //! the Smith predictor's delay plus the pose's age. The prediction and the disturbance
+  //! estimate's "command in effect" both reach back this far.
+  double prediction_horizon_s(const ControllerInput& input) const noexcept {
+    return compensated_delay_s() + input.pose_age_s;
+  }
   //! Largest lead curvature the friction guard allows at `speed` [1/m] (+inf: no guard).
   double friction_guard_curvature(double speed) const noexcept;
 
