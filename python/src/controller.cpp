@@ -332,7 +332,9 @@ void bind_controller(py::module_& m) {
       .def_readonly("feedforward_curvature", &D::feedforward_curvature, "kappa_ff [1/m]")
       .def_readonly("path_arc_length_m", &D::path_arc_length_m, "s of the closest point [m]")
       .def_readonly("path_curvature", &D::path_curvature, "[1/m]")
-      .def_readonly("fictive_steering_angle_rad", &D::fictive_steering_angle_rad, "delta_1 [rad]");
+      .def_readonly("fictive_steering_angle_rad", &D::fictive_steering_angle_rad, "delta_1 [rad]")
+      .def_readonly("disturbance_curvature", &D::disturbance_curvature,
+                    "the plant disturbance's estimate kappa_d [1/m] (0 without the estimation)");
 
   using O = ControllerOutput;
   py::class_<O>(m, "ControllerOutput", "The steering command and its diagnostics.")

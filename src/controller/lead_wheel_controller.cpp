@@ -460,7 +460,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
 
   // Diagnostics of the real axles.
   const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
-  disturbance_.set_rear_path_curvature(rear_projection.curvature);
+  disturbance_.set_rear_path(rear_projection.curvature, rear_projection.lateral_error_m);
   const Vec2 front_axle = input.rear_axle_position + parameters_.chain.vehicle_wheelbase_m *
                                                          unit_from_heading(input.heading_rad);
   const PathProjection front_projection = path_->project(front_axle, front_hint_);
@@ -491,6 +491,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   diagnostics.path_arc_length_m = rear_projection.arc_length_m;
   diagnostics.path_curvature = rear_projection.curvature;
   diagnostics.fictive_steering_angle_rad = n > 0 ? angles_[0] : steering;
+  diagnostics.disturbance_curvature = disturbance_.estimate();
   return Status::ok;
 }
 

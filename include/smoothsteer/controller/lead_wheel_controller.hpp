@@ -41,7 +41,10 @@ class LeadWheelController final : public SteeringController {
  public:
   //! Re-initialises the chain in stationary cornering at the measured steering angle (clamped
   //! into the invariant set) for forward driving; the direction is re-detected from v.
+  //! The disturbance estimate persists across it (DisturbanceEstimator::reset()).
   void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  //! Clears the disturbance estimate (a new car, a wheel alignment, a test from scratch).
+  void forget_disturbance_estimate() noexcept { disturbance_.forget(); }
   const char* name() const noexcept override { return "lead_wheel"; }
   //! Replanning (SteeringController::set_path): swaps the path and re-seeds the three hints;
   //! the chain state, direction and delay history carry on, so delta_veh stays continuous

@@ -54,6 +54,9 @@ struct TrackingDiagnostics {
   double path_arc_length_m = 0.0;       //!< s of the rear axle's closest point
   double path_curvature = 0.0;          //!< path curvature at the rear axle's closest point
   double fictive_steering_angle_rad = 0.0;  //!< delta_1 of the fictive chain
+  //! The estimate of the curvature the plant adds at the rear axle (a rack offset, crossfall,
+  //! crosswind; docs/feedforward.md section 7) [1/m]; 0 without the estimation.
+  double disturbance_curvature = 0.0;
 };
 
 struct ControllerOutput {
