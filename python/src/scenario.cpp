@@ -34,14 +34,12 @@ py::tuple run(const runner::Scenario& scenario) {
   {
     py::gil_scoped_release unlocked;  // a run takes from milliseconds to seconds
     const std::unique_ptr<SteeringController> controller = runner::make_controller(scenario);
-    const std::unique_ptr<VehicleModel> model = runner::make_vehicle_model(scenario);
     MetricsAccumulator metrics(scenario.metrics);
     result.simulation =
-        simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
-                 scenario.start, *controller, [&](const TraceSample& sample) {
-                   rows.push_back(io::trace_row(sample));
-                   metrics.add(sample);
-                 });
+        runner::simulate_scenario(scenario, *controller, [&](const TraceSample& sample) {
+          rows.push_back(io::trace_row(sample));
+          metrics.add(sample);
+        });
     result.metrics = metrics.result();
     result.controller_name = controller->name();
   }
