@@ -50,7 +50,7 @@ VehicleState rk4_step(const PlantContext& c, const VehicleState& state, double t
   const PlantArray x = state.to_array();
   auto eval = [&](const PlantArray& y, double fraction) {
     const double delta = delta_start + fraction * (delta_end - delta_start);
-    return derivative(c, VehicleState::from_array(y), delta, acceleration, time + fraction * h)
+    return derivative(c, VehicleState::from_array(y), delta, acceleration, time + 0.5 * h)
         .to_array();
   };
   auto shifted = [&](const PlantArray& k, double scale) {
@@ -114,7 +114,8 @@ void solve_piece(const PlantContext& c, double origin, double from, double to,
     PlantArray x;
     std::copy_n(y.begin(), x.size(), x.begin());
     const VehicleState s = VehicleState::from_array(x);
-    const VehicleState d = derivative(c, s, effective(c, delta_of(t - origin)), acceleration, t);
+    const VehicleState d =
+        derivative(c, s, effective(c, delta_of(t - origin)), acceleration, 0.5 * (from + to));
     const PlantArray dx = d.to_array();
     std::copy(dx.begin(), dx.end(), dydt.begin());
     dydt.back() = rear_axle_speed(s, d, lr);

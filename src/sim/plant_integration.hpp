@@ -50,7 +50,10 @@ struct BodyAcceleration {
 BodyAcceleration body_acceleration(const PlantContext& c, const VehicleState& state, double t,
                                    bool with_crossfall) noexcept;
 
-//! The model's derivative with the crossfall and the side force of `c` at time `t` added.
+//! The model's derivative with the crossfall and the side force of `c` at time `t` added. The
+//! integrators pass the middle of the piece they integrate (split at the side force's start),
+//! as for the speed profile's acceleration: a step read at a stage time on the piece's end
+//! would leak into the piece before it.
 VehicleState plant_derivative(const PlantContext& c, const VehicleState& state, double delta,
                               double acceleration, double t) noexcept;
 
