@@ -90,6 +90,15 @@ void bind_scenario(py::module_& m) {
             return py::make_tuple(s.start.position.x, s.start.position.y, s.start.heading_rad);
           },
           "rear-axle start pose (x [m], y [m], psi [rad])")
+      .def_readonly("simulation", &runner::Scenario::simulation,
+                    "the SimulationParameters the run uses (a copy to read or check)")
+      .def_property_readonly(
+          "plant_vehicle",
+          [](const runner::Scenario& s) -> py::object {
+            return s.plant_vehicle ? py::cast(*s.plant_vehicle) : py::none();
+          },
+          "simulation.plant_vehicle's VehicleParameters (the truth), None: the plant is the "
+          "scenario's vehicle")
       .def_property_readonly(
           "parameters", [](const runner::Scenario& s) { return from_json(s.parameters); },
           "the resolved parameter set as a dict (summary.json's "
