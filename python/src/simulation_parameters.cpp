@@ -62,6 +62,8 @@ void bind_simulation_parameters(py::module_& m) {
       .def_readwrite("side_force", &P::side_force, "SideForce")
       .def_readwrite("pose_latency_s", &P::pose_latency_s, "[s]")
       .def_readwrite("pose_rate_hz", &P::pose_rate_hz, "[Hz]; None: every control step")
+      .def_readwrite("pose_age_known", &P::pose_age_known,
+                     "the system is told the pose's age (SteeringSystemInput.pose_age_s)")
       .def_readwrite("steering_angle_sensor_offset_rad", &P::steering_angle_sensor_offset_rad,
                      "[rad]")
       .def_readwrite("gyro_bias_radps", &P::gyro_bias_radps, "[rad/s]")

@@ -30,16 +30,20 @@ void DisturbanceEstimator::update(const ControllerInput& input, const Context& c
       // steady_lateral_jerk_mps3; the weight grows from 0 to 1 over the settling distance after.
       const double v = input.speed_mps;
       const double moved = std::abs(rear_path_curvature_ - previous_rear_path_curvature_);
-      if (moved > steady_lateral_jerk_mps3 / (v * v * v) * distance) {
+      const bool turning =
+          commands.count() > 1 &&
+          std::abs(commands.issued(0).steering_rad - commands.issued(1).steering_rad) >
+              settled_steering_rate_radps * commands.issued(0).period_s;
+      if (turning || moved > steady_lateral_jerk_mps3 / (v * v * v) * distance) {
         steady_path_m_ = 0.0;
       } else {
         steady_path_m_ += distance;
       }
       const double settling_m = std::max(min_settling_m, settling_time_s * v);
+      engaged_ = engaged_ || std::abs(rear_lateral_error_m_) <= engaged_lateral_error_m;
       const bool trusted =
-          v >= min_learning_speed_mps &&
-          v * v * std::abs(rear_path_curvature_) <= max_learning_lateral_acceleration_mps2 &&
-          std::abs(rear_lateral_error_m_) <= max_learning_lateral_error_m;
+          engaged_ && v >= min_learning_speed_mps &&
+          v * v * std::abs(rear_path_curvature_) <= max_learning_lateral_acceleration_mps2;
       const double weight = trusted ? std::clamp(steady_path_m_ / settling_m - 1.0, 0.0, 1.0) : 0.0;
       // A running mean whose memory grows with what it has learned, up to the estimation
       // length: the mean of all samples so far (weighted by distance), then a low-pass.

@@ -100,19 +100,56 @@ void require(bool holds, const std::string& message) {
 
 std::vector<Imperfection> default_imperfections() {
   std::vector<Imperfection> list;
+  const auto add = [&list](std::string name, const char* group, std::string key, double value) {
+    list.push_back({std::move(name), group, {key + "=" + ResultsTable::number(value, 4)}});
+  };
+  const auto text = [](double value, int digits) { return ResultsTable::number(value, digits); };
+  // Disturbances: a misaligned rack, a road sloping across, a crosswind (steady, and a step from
+  // 3 s on). 400 N is 0.5 rho v^2 c_y A for a 20 m/s wind across a saloon with c_y A = 1.7 m^2
+  // (an assumed side-force area); its centre of pressure 0.5 m ahead of the CG gives 200 N m.
   for (const double offset : {0.005, -0.005, 0.01, -0.01, 0.02, -0.02}) {
-    list.push_back({"rack offset " + ResultsTable::number(offset, 3) + " rad",
-                    "disturbance",
-                    {"simulation.steering_offset_rad=" + ResultsTable::number(offset, 3)}});
+    add("rack offset " + text(offset, 3) + " rad", "disturbance", "simulation.steering_offset_rad",
+        offset);
   }
-  // A plant curvature of g sin(phi) / v^2 is crossfall phi at speed v: 0.001 1/m is about 2 %
-  // at 15 m/s.
-  for (const double curvature : {0.001, -0.001, 0.002}) {
-    list.push_back(
-        {"plant curvature " + ResultsTable::number(curvature, 3) + " 1/m",
-         "disturbance",
-         {"simulation.plant_curvature_disturbance=" + ResultsTable::number(curvature, 3)}});
+  for (const double grade : {0.01, 0.02, 0.03, -0.02}) {
+    add("crossfall " + text(100.0 * grade, 0) + " %", "disturbance", "simulation.crossfall", grade);
   }
+  list.push_back(
+      {"crosswind 400 N",
+       "disturbance",
+       {"simulation.side_force.force_n=400", "simulation.side_force.yaw_moment_nm=200"}});
+  list.push_back({"gust 800 N at 3 s",
+                  "disturbance",
+                  {"simulation.side_force.force_n=800", "simulation.side_force.yaw_moment_nm=400",
+                   "simulation.side_force.start_s=3"}});
+  // Model errors: the plant differs from the vehicle file the controller is given.
+  for (const double mass : {1.3, 0.9}) {
+    add("mass x" + text(mass, 1), "model error", "simulation.plant_scales.mass", mass);
+  }
+  for (const double stiffness : {1.25, 0.75}) {
+    add("cornering stiffness x" + text(stiffness, 2), "model error",
+        "simulation.plant_scales.cornering_stiffness", stiffness);
+  }
+  add("friction x0.6", "model error", "simulation.plant_scales.friction", 0.6);
+  for (const double shift : {0.1, -0.1}) {
+    add("CG " + text(shift, 1) + " L forward", "model error", "simulation.plant_scales.cg_position",
+        shift);
+  }
+  for (const double bandwidth : {0.5, 1.5}) {
+    add("actuator bandwidth x" + text(bandwidth, 1), "model error",
+        "simulation.plant_actuator_scales.bandwidth", bandwidth);
+  }
+  // Sensing: a late pose (not told to the controller), a slow pose, biased sensors.
+  for (const double latency : {0.03, 0.06, 0.1}) {
+    add("pose " + text(1000.0 * latency, 0) + " ms late", "sensing", "simulation.pose_latency_s",
+        latency);
+  }
+  add("pose at 10 Hz", "sensing", "simulation.pose_rate_hz", 10.0);
+  for (const double offset : {0.01, -0.01}) {
+    add("angle sensor " + text(offset, 2) + " rad", "sensing",
+        "simulation.steering_angle_sensor_offset_rad", offset);
+  }
+  add("gyro bias 0.005 rad/s", "sensing", "simulation.gyro_bias_radps", 0.005);
   return list;
 }
 

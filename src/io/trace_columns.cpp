@@ -34,7 +34,8 @@ const std::array<const char*, trace_column_count>& trace_column_names() noexcept
                                                                      "vy",
                                                                      "yaw_rate",
                                                                      "beta_rear",
-                                                                     "beta_rear_input"};
+                                                                     "beta_rear_input",
+                                                                     "kappa_d_estimate"};
   return names;
 }
 
@@ -65,7 +66,8 @@ std::array<double, trace_column_count> trace_row(const TraceSample& s) noexcept 
           s.lateral_velocity_mps,
           s.yaw_rate_radps,
           s.rear_side_slip_rad,
-          s.rear_side_slip_input_rad};
+          s.rear_side_slip_input_rad,
+          s.disturbance_curvature};
 }
 
 }  // namespace smoothsteer::io

@@ -171,6 +171,12 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
     }
   }
   read_law_options(c, base, vehicle);
+  // The car's block estimates the plant's disturbance unless the file says otherwise
+  // (DisturbanceEstimation::car_length_m; 0 turns it off).
+  if (derived && !c.has("disturbance_estimation_length_m")) {
+    base.disturbance_estimation = {.enabled = true,
+                                   .length_m = DisturbanceEstimation::car_length_m};
+  }
   std::optional<SpeedCompensation> compensation;
   if (derived) {
     if (!path) c.fail("derived_compensation", "needs the path (its largest curvature)");

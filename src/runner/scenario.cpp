@@ -129,6 +129,7 @@ void read_imperfections(ConfigSection& sim, Scenario& s, const std::string& file
     p.pose_rate_hz =
         sim.required_number("pose_rate_hz", {SimulationParameters::min_pose_rate_hz, 1000.0});
   }
+  p.pose_age_known = sim.boolean("pose_age_known", false);
   p.steering_angle_sensor_offset_rad =
       sim.number("steering_angle_sensor_offset_rad", 0.0, {-0.1, 0.1});
   p.gyro_bias_radps = sim.number("gyro_bias_radps", 0.0, {-0.5, 0.5});

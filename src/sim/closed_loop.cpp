@@ -188,6 +188,9 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
     const Pose2 localized = pose_delay.deliver(k, rear);
     input.rear_axle_position = localized.position;
     input.heading_rad = localized.heading_rad;
+    if (parameters.pose_age_known && pose_delay.active()) {
+      input.pose_age_s = std::max(0.0, t - pose_delay.sampled_time(k));
+    }
     input.speed_mps = state.vx_mps;
     input.acceleration_mps2 = speed.acceleration(t);
     input.period_s = parameters.control_period_s;

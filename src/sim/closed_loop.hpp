@@ -15,6 +15,7 @@ inline void record_controller_report(TraceSample& sample,
   sample.measured_lateral_error_m = diagnostics.lateral_error_m;
   sample.sliding_variable = diagnostics.sliding_variable;
   sample.lead_curvature = diagnostics.lead_curvature;
+  sample.disturbance_curvature = diagnostics.disturbance_curvature;
 }
 
 //! The closed loop on `path`, or on the pieces of `plan` (then `path` is its piece 0), every

@@ -65,6 +65,15 @@ std::optional<Violation> imperfection_violation(const SimulationParameters& p) n
                "must be in [1, 1 / control_period_s] Hz; 1 / control_period_s =",
                1.0 / p.control_period_s);
   }
+  if (p.pose_age_known) {
+    const double oldest = p.pose_latency_s + (p.pose_rate_hz ? 1.0 / *p.pose_rate_hz : 0.0);
+    if (!(oldest <= ControllerInput::max_pose_age_s)) {
+      return bad("pose_age_known", oldest,
+                 "needs pose_latency_s + 1 / pose_rate_hz (the oldest pose's age) <= "
+                 "ControllerInput::max_pose_age_s =",
+                 ControllerInput::max_pose_age_s);
+    }
+  }
   if (!within(p.steering_angle_sensor_offset_rad, -0.1, 0.1)) {
     return bad("steering_angle_sensor_offset_rad", p.steering_angle_sensor_offset_rad,
                "must be in [-0.1, 0.1] rad");

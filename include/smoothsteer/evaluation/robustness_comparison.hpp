@@ -23,8 +23,12 @@ struct Imperfection {
   std::vector<std::string> overrides;
 };
 
-//! The imperfections the simulator models: rack offsets of +-0.005, +-0.01 and +-0.02 rad and
-//! plant curvature disturbances (docs/simulation.md).
+//! The imperfections of docs/results/robustness.md, in the simulator's keys (docs/simulation.md,
+//! "Model error and imperfections"): disturbances (rack offsets of +-0.005, +-0.01, +-0.02 rad,
+//! crossfall of 1, 2, 3 and -2 %, a steady crosswind and a gust step), model errors (mass +30 %
+//! and -10 %, cornering stiffness +-25 %, friction 0.6, CG +-10 % of the wheelbase, actuator
+//! bandwidth +-50 %) and sensing (pose 30, 60, 100 ms late and at 10 Hz, steering-angle sensor
+//! offset +-0.01 rad, gyro bias 0.005 rad/s).
 std::vector<Imperfection> default_imperfections();
 
 //! A scenario file and the time from which its max |e| counts [s] (0: the whole run), e.g. 8 s

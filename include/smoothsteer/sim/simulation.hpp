@@ -108,6 +108,10 @@ struct SimulationParameters {
   //! (still pose_latency_s late): at t the pose sampled at floor((t - latency) f) / f. Absent:
   //! every control step.
   std::optional<double> pose_rate_hz;
+  //! The system is told the delivered pose's age (SteeringSystemInput::pose_age_s): the
+  //! latency plus the time held at a low pose rate, which together must stay within
+  //! ControllerInput::max_pose_age_s. false: the pose arrives late unannounced.
+  bool pose_age_known = false;
   //! The measured road-wheel angle reads this much more than the actuator delivers [rad],
   //! |.| <= 0.1 (the rack itself true; steering_offset_rad is the opposite case).
   double steering_angle_sensor_offset_rad = 0.0;
@@ -160,6 +164,8 @@ struct TraceSample {
   double rear_side_slip_input_rad = 0.0;  //!< beta_r given to the controller (estimate)
   double lateral_velocity_mps = 0.0;
   double yaw_rate_radps = 0.0;
+  //! The controller's estimate of the plant's disturbance [1/m] (TrackingDiagnostics).
+  double disturbance_curvature = 0.0;
 };
 
 //! Number of values of a TraceSample: every field is a double.
