@@ -1,3 +1,5 @@
+// The plausibility layer of the sensor fault gate and its rules (sensor_fault_gate.hpp).
+
 #include <algorithm>
 #include <cmath>
 
