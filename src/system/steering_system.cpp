@@ -98,12 +98,13 @@ void SteeringSystem::set_up(const SteeringSystemParameters& parameters) {
   }
 }
 
-void SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
-  controller_->reset(measured_steering_angle_rad);
+Status SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
+  const Status status = controller_->reset(measured_steering_angle_rad);
+  if (status != Status::ok) return status;
   if (observer_) observer_->reset();
   controller_output_ = {};
-  last_command_rad_ =
-      std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
+  last_command_rad_ = measured_steering_angle_rad;
+  return Status::ok;
 }
 
 bool SteeringSystem::valid_input(const SteeringSystemInput& input) const noexcept {

@@ -158,8 +158,9 @@ class SteeringSystem {
   //! estimate the observer does not trust gives beta_r = 0 (side_slip.estimate_trusted).
   Status update(const SteeringSystemInput& input, SteeringSystemOutput& output) noexcept;
   //! Restarts the controller at the measured steering angle and the observer from straight
-  //! driving.
-  void reset(double measured_steering_angle_rad = 0.0) noexcept;
+  //! driving. The controller's status (SteeringController::reset): invalid_input for NaN, inf,
+  //! |angle| >= pi / 2 or beyond the car's angle limit, and then nothing changes.
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept;
   //! Replanning: SteeringController::set_path's contract.
   Status set_path(std::shared_ptr<const Path> path) noexcept {
     return controller_->set_path(std::move(path));
