@@ -11,6 +11,8 @@
 //                 optimal-control lower bound (docs/engagement.md)
 //   road-suite    every controller on the road suite x the three cars x both plants
 //                 (docs/results/road_suite.md)
+//   robustness    every controller under a car's imperfections, acting on the plant only
+//                 (docs/results/robustness.md)
 // --plant dynamic|double_track sets the plant of the reported runs (lane-change, the tuning
 // study's held-out scenarios; the training keeps its scenarios' plant: the held-out plant).
 // Options of `compare` work before or after the sub-command (`compare parameters -o DIR`).
@@ -26,6 +28,7 @@
 #include "smoothsteer/evaluation/paper_figures.hpp"
 #include "smoothsteer/evaluation/reaching_benchmark.hpp"
 #include "smoothsteer/evaluation/road_suite_comparison.hpp"
+#include "smoothsteer/evaluation/robustness_comparison.hpp"
 #include "smoothsteer/evaluation/scenario_comparison.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
@@ -51,7 +54,13 @@ struct CompareOptions {
   std::vector<std::string> controllers = study_controller_names();
   //! The plant of the reported runs: empty (each scenario's own model), dynamic, double_track.
   std::string plant;
-  RoadSuiteOptions road_suite;        // road_files: roads/*.yaml and hairpin.yaml of --scenarios
+  RoadSuiteOptions road_suite;   // road_files: roads/*.yaml and hairpin.yaml of --scenarios
+  RobustnessOptions robustness;  // scenarios: from robustness_files
+  //! `compare robustness --files`: FILE or FILE@T (max |e| from T s on; circle_sections starts
+  //! off the path).
+  std::vector<std::string> robustness_files{"lane_change_10.yaml", "lane_change_15.yaml",
+                                            "lane_change_19.yaml", "circle_sections.yaml@8",
+                                            "hairpin.yaml"};
   EngagementStudyOptions engagement;  // scenario_files: lane_change_{10,15,19} of --scenarios
 };
 
@@ -172,6 +181,65 @@ void add_road_suite_command(CLI::App& compare, const std::shared_ptr<CompareOpti
   });
 }
 
+//! "lane_change_15.yaml" or "circle_sections.yaml@8" (max |e| from 8 s on), in --files.
+RobustnessScenario robustness_scenario(const std::string& entry, const std::string& directory) {
+  RobustnessScenario scenario;
+  const std::size_t at = entry.rfind('@');
+  scenario.file = entry.substr(0, at);
+  if (at != std::string::npos) {
+    const std::string settle = entry.substr(at + 1);
+    std::size_t used = 0;
+    try {
+      scenario.settle_time_s = std::stod(settle, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != settle.size()) {
+      throw CLI::ValidationError("--scenarios", "'" + entry +
+                                                    "': the part after '@' must be a settle "
+                                                    "time in seconds, e.g. circle_sections.yaml@8");
+    }
+  }
+  if (std::filesystem::path(scenario.file).is_relative() &&
+      !std::filesystem::exists(scenario.file)) {
+    scenario.file = (std::filesystem::path(directory) / scenario.file).string();
+  }
+  return scenario;
+}
+
+void add_robustness_command(CLI::App& compare, const std::shared_ptr<CompareOptions>& options) {
+  CLI::App* robustness = compare.add_subcommand(
+      "robustness", "every controller under a car's imperfections, acting on the plant only");
+  RobustnessOptions& defaults = options->robustness;
+  defaults.vehicle_files = {"vehicles/passenger_car.yaml"};
+  defaults.controllers = road_suite_controller_names();
+  robustness
+      ->add_option(
+          "--files", options->robustness_files,
+          "scenario files (in --scenarios unless found as given); FILE@T: max |e| from T s on")
+      ->capture_default_str();
+  robustness->add_option("--vehicles", defaults.vehicle_files, "vehicle files")
+      ->capture_default_str();
+  robustness->add_option("--plants", defaults.models, "plants (scenario models)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"dynamic", "double_track"}));
+  robustness->add_option("--controllers", defaults.controllers, "certified and baseline names")
+      ->capture_default_str();
+  robustness->add_option("--threads", defaults.threads, "worker threads")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  robustness->callback([options] {
+    RobustnessOptions study = options->robustness;
+    if (!options->plant.empty()) study.models = {options->plant};
+    for (const std::string& entry : options->robustness_files) {
+      study.scenarios.push_back(robustness_scenario(entry, options->scenario_directory));
+    }
+    const RobustnessResult result = run_robustness_comparison(study);
+    emit(result.runs, *options, "robustness");
+    emit(result.summary, *options, "robustness_summary");
+  });
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
@@ -255,6 +323,7 @@ void add_compare_command(CLI::App& app) {
   });
   add_engagement_command(*compare, options);
   add_road_suite_command(*compare, options);
+  add_robustness_command(*compare, options);
 }
 
 }  // namespace smoothsteer::cli

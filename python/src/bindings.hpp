@@ -38,6 +38,8 @@ void bind_cusps(py::module_& m);
 void bind_kinematic_loop(py::module_& m);
 //! solve_optimal_reaching(), HosmController, ReachingBenchmarkOptions.
 void bind_evaluation(py::module_& m);
+//! SimulationParameters, PlantScales, PlantActuatorScales, SideForce, scaled_plant_vehicle().
+void bind_simulation_parameters(py::module_& m);
 //! load_scenario(), run_scenario(), Scenario.
 void bind_scenario(py::module_& m);
 //! VehicleParameters, ActuatorParameters, SteeringSystem, make_steering_system().

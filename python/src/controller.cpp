@@ -110,9 +110,11 @@ py::list field_rows() {
 //! One update() call; a non-ok status raises ControllerError.
 ControllerOutput update(SteeringController& controller, const py::object& position,
                         double heading_rad, double speed_mps, double acceleration_mps2,
-                        double period_s) {
-  const ControllerInput input{to_vec2(position, "rear_axle_position"), heading_rad, speed_mps,
-                              acceleration_mps2, period_s};
+                        double period_s, double rear_axle_side_slip_rad, double pose_age_s) {
+  ControllerInput input{to_vec2(position, "rear_axle_position"), heading_rad, speed_mps,
+                        acceleration_mps2, period_s};
+  input.rear_axle_side_slip_rad = rear_axle_side_slip_rad;
+  input.pose_age_s = pose_age_s;
   ControllerOutput output;
   const Status status = controller.update(input, output);
   if (status != Status::ok) throw ControllerError(status);
@@ -330,7 +332,9 @@ void bind_controller(py::module_& m) {
       .def_readonly("feedforward_curvature", &D::feedforward_curvature, "kappa_ff [1/m]")
       .def_readonly("path_arc_length_m", &D::path_arc_length_m, "s of the closest point [m]")
       .def_readonly("path_curvature", &D::path_curvature, "[1/m]")
-      .def_readonly("fictive_steering_angle_rad", &D::fictive_steering_angle_rad, "delta_1 [rad]");
+      .def_readonly("fictive_steering_angle_rad", &D::fictive_steering_angle_rad, "delta_1 [rad]")
+      .def_readonly("disturbance_curvature", &D::disturbance_curvature,
+                    "the plant disturbance's estimate kappa_d [1/m] (0 without the estimation)");
 
   using O = ControllerOutput;
   py::class_<O>(m, "ControllerOutput", "The steering command and its diagnostics.")
@@ -345,9 +349,11 @@ void bind_controller(py::module_& m) {
                                  "Interface of every controller: update() once per period.")
       .def("update", &update, py::arg("rear_axle_position"), py::arg("heading_rad"),
            py::arg("speed_mps"), py::arg("acceleration_mps2") = 0.0, py::arg("period_s") = 0.02,
+           py::arg("rear_axle_side_slip_rad") = 0.0, py::arg("pose_age_s") = 0.0,
            "One control period: rear axle (x, y) [m], heading [rad], signed speed [m/s], dv/dt "
-           "[m/s^2], period [s]. Returns a ControllerOutput; raises ControllerError on an error "
-           "status (e.g. a NaN input).")
+           "[m/s^2], period [s], the rear axle's side slip beta_r [rad] and how old the pose is "
+           "[s] (0 <= pose_age_s <= 0.5). Returns a ControllerOutput; raises ControllerError on "
+           "an error status (e.g. a NaN input).")
       .def(
           "reset",
           [](SteeringController& controller, double angle) {

@@ -6,18 +6,60 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "bindings.hpp"
 #include "smoothsteer/baselines/hosm_controller.hpp"
 #include "smoothsteer/evaluation/optimal_reaching.hpp"
 #include "smoothsteer/evaluation/reaching_benchmark.hpp"
+#include "smoothsteer/evaluation/robustness_comparison.hpp"
 
 namespace smoothsteer::python {
 namespace {
 
 py::array_t<double> array(const std::vector<double>& values) {
   return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+//! A table's rows as dicts keyed by its header (every cell a string, as in its CSV).
+py::list table_rows(const ResultsTable& table) {
+  py::list rows;
+  for (const std::vector<std::string>& row : table.rows) {
+    py::dict entry;
+    for (std::size_t k = 0; k < row.size() && k < table.header.size(); ++k) {
+      entry[py::str(table.header[k])] = row[k];
+    }
+    rows.append(entry);
+  }
+  return rows;
+}
+
+py::dict compare_robustness(const std::vector<std::pair<std::string, double>>& scenarios,
+                            const std::vector<std::string>& vehicles,
+                            const std::vector<std::string>& models,
+                            const std::vector<std::string>& controllers,
+                            const std::optional<std::vector<Imperfection>>& imperfections,
+                            int threads) {
+  RobustnessOptions options;
+  for (const auto& [file, settle] : scenarios) options.scenarios.push_back({file, settle});
+  options.vehicle_files = vehicles;
+  options.models = models;
+  options.controllers = controllers;
+  if (imperfections) options.imperfections = *imperfections;
+  options.threads = threads;
+  RobustnessResult result;
+  {
+    py::gil_scoped_release unlocked;  // minutes for the whole matrix
+    result = run_robustness_comparison(options);
+  }
+  py::dict tables;
+  tables["runs"] = table_rows(result.runs);
+  tables["summary"] = table_rows(result.summary);
+  tables["summary_notes"] = result.summary.notes;
+  return tables;
 }
 
 py::dict solve(const py::kwargs& keywords) {
@@ -64,6 +106,27 @@ void bind_evaluation(py::module_& m) {
         "The shortest reaching manoeuvre (Ipopt) for ReachingProblem keyword fields: a dict with "
         "distance_m [m], converged, and node arrays arc_length_m [m], lateral_error_m [m], "
         "heading_rad [rad], steering_rad [rad], steering_rate_per_m [rad/m].");
+
+  py::class_<Imperfection>(m, "Imperfection",
+                           "A car's imperfection: scenario overrides acting on the plant only.")
+      .def(py::init<std::string, std::string, std::vector<std::string>>(), py::arg("name"),
+           py::arg("group"), py::arg("overrides"))
+      .def_readwrite("name", &Imperfection::name)
+      .def_readwrite("group", &Imperfection::group, "disturbance, model error or sensing")
+      .def_readwrite("overrides", &Imperfection::overrides,
+                     "--set entries, e.g. "
+                     "'simulation.steering_offset_rad=0.01'");
+  m.def("default_imperfections", &default_imperfections,
+        "The imperfections of `smoothsteer compare robustness` (docs/results/robustness.md).");
+  m.def("compare_robustness", &compare_robustness, py::arg("scenarios"),
+        py::arg("vehicles") = std::vector<std::string>{"vehicles/passenger_car.yaml"},
+        py::arg("models") = std::vector<std::string>{"dynamic"},
+        py::arg("controllers") = std::vector<std::string>{"certified", "stanley"},
+        py::arg("imperfections") = py::none(), py::arg("threads") = 1,
+        "Every controller under each imperfection (smoothsteer compare robustness): scenarios "
+        "as (file, settle_time_s) pairs. Returns {'runs': [...], 'summary': [...], "
+        "'summary_notes': [...]}, rows as dicts of the CSV's columns. Raises ValueError naming "
+        "the bad option.");
 
   using O = ReachingBenchmarkOptions;
   py::class_<O>(m, "ReachingBenchmarkOptions", "Settings of the reaching benchmark.")

@@ -56,5 +56,6 @@ PYBIND11_MODULE(_smoothsteer, m) {
   bind_tuning(m);
   bind_system(m);
   bind_evaluation(m);
+  bind_simulation_parameters(m);
   bind_scenario(m);
 }

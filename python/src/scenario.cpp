@@ -34,14 +34,12 @@ py::tuple run(const runner::Scenario& scenario) {
   {
     py::gil_scoped_release unlocked;  // a run takes from milliseconds to seconds
     const std::unique_ptr<SteeringController> controller = runner::make_controller(scenario);
-    const std::unique_ptr<VehicleModel> model = runner::make_vehicle_model(scenario);
     MetricsAccumulator metrics(scenario.metrics);
     result.simulation =
-        simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,
-                 scenario.start, *controller, [&](const TraceSample& sample) {
-                   rows.push_back(io::trace_row(sample));
-                   metrics.add(sample);
-                 });
+        runner::simulate_scenario(scenario, *controller, [&](const TraceSample& sample) {
+          rows.push_back(io::trace_row(sample));
+          metrics.add(sample);
+        });
     result.metrics = metrics.result();
     result.controller_name = controller->name();
   }
@@ -92,6 +90,15 @@ void bind_scenario(py::module_& m) {
             return py::make_tuple(s.start.position.x, s.start.position.y, s.start.heading_rad);
           },
           "rear-axle start pose (x [m], y [m], psi [rad])")
+      .def_readonly("simulation", &runner::Scenario::simulation,
+                    "the SimulationParameters the run uses (a copy to read or check)")
+      .def_property_readonly(
+          "plant_vehicle",
+          [](const runner::Scenario& s) -> py::object {
+            return s.plant_vehicle ? py::cast(*s.plant_vehicle) : py::none();
+          },
+          "simulation.plant_vehicle's VehicleParameters (the truth), None: the plant is the "
+          "scenario's vehicle")
       .def_property_readonly(
           "parameters", [](const runner::Scenario& s) { return from_json(s.parameters); },
           "the resolved parameter set as a dict (summary.json's "

@@ -30,7 +30,7 @@ SteeringSystemOutput update(SteeringSystem& system, const py::object& position, 
                             double speed_mps, double acceleration_mps2, double yaw_rate_radps,
                             double lateral_acceleration_mps2, double period_s,
                             std::optional<double> steering_angle_rad,
-                            std::optional<double> rear_axle_side_slip_rad) {
+                            std::optional<double> rear_axle_side_slip_rad, double pose_age_s) {
   SteeringSystemInput input;
   input.rear_axle_position = to_vec2(position, "rear_axle_position");
   input.heading_rad = heading_rad;
@@ -41,6 +41,7 @@ SteeringSystemOutput update(SteeringSystem& system, const py::object& position, 
   input.period_s = period_s;
   input.steering_angle_rad = steering_angle_rad;
   input.rear_axle_side_slip_rad = rear_axle_side_slip_rad;
+  input.pose_age_s = pose_age_s;
   SteeringSystemOutput output;
   const Status status = system.update(input, output);
   if (status != Status::ok) throw ControllerError(status);
@@ -263,12 +264,13 @@ void bind_system(py::module_& m) {
            py::arg("speed_mps"), py::arg("acceleration_mps2") = 0.0,
            py::arg("yaw_rate_radps") = 0.0, py::arg("lateral_acceleration_mps2") = 0.0,
            py::arg("period_s") = 0.02, py::arg("steering_angle_rad") = py::none(),
-           py::arg("rear_axle_side_slip_rad") = py::none(),
+           py::arg("rear_axle_side_slip_rad") = py::none(), py::arg("pose_age_s") = 0.0,
            "One control period with what the car measures: rear axle (x, y) [m], heading "
            "[rad], signed speed [m/s], dv/dt [m/s^2], yaw rate [rad/s], lateral acceleration "
            "at the CG [m/s^2], period [s], the measured road-wheel angle [rad] (None: the last "
-           "command) and a slip sensor's beta_r [rad]. Returns a SteeringSystemOutput; raises "
-           "ControllerError on an error status.")
+           "command), a slip sensor's beta_r [rad] and how old the pose is [s] (localization "
+           "latency, 0 <= pose_age_s <= 0.5; the controller carries the pose forward over it). "
+           "Returns a SteeringSystemOutput; raises ControllerError on an error status.")
       .def(
           "reset",
           [](SteeringSystem& system, double angle) {

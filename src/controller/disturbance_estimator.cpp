@@ -36,8 +36,17 @@ void DisturbanceEstimator::update(const ControllerInput& input, const Context& c
         steady_path_m_ += distance;
       }
       const double settling_m = std::max(min_settling_m, settling_time_s * v);
-      const double weight = std::clamp(steady_path_m_ / settling_m - 1.0, 0.0, 1.0);
-      const double gain = weight * std::min(1.0, distance / context.length_m);
+      const bool trusted =
+          v >= min_learning_speed_mps &&
+          v * v * std::abs(rear_path_curvature_) <= max_learning_lateral_acceleration_mps2 &&
+          std::abs(rear_lateral_error_m_) <= max_learning_lateral_error_m;
+      const double weight = trusted ? std::clamp(steady_path_m_ / settling_m - 1.0, 0.0, 1.0) : 0.0;
+      // A running mean whose memory grows with what it has learned, up to the estimation
+      // length: the mean of all samples so far (weighted by distance), then a low-pass.
+      learned_m_ = std::min(context.length_m, learned_m_ + weight * distance);
+      const double memory =
+          std::clamp(learned_m_, std::min(min_memory_m, context.length_m), context.length_m);
+      const double gain = weight * std::min(1.0, distance / memory);
       const double bound = context.feedforward_bound;
       estimate_ = std::clamp(estimate_ + gain * (measured - commanded - estimate_), -bound, bound);
     }

@@ -324,18 +324,19 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       .enabled = parameters_.disturbance_estimation.enabled,
       .length_m = parameters_.disturbance_estimation.length_m,
       .direction = direction_,
-      .delay_s = compensated_delay_s(),
+      .delay_s = prediction_horizon_s(input),
       .slip_lag_m = dynamics_.slip_lag_m,
       .dynamics_gain = dynamics_.gain,
       .wheelbase_m = wheelbase,
       .feedforward_bound = parameters_.feedforward_curvature_bound()};
   disturbance_.update(input, estimation, delay_);
-  // Stage 3, the delay prediction: with a known actuator delay the law acts on the pose at which
-  // this command will take effect. The law steers the rear axle's course psi + beta_r (the
-  // kinematic model's heading).
-  const Pose2 law_pose =
-      delay_.predict({input.rear_axle_position, input.heading_rad + input.rear_axle_side_slip_rad},
-                     compensated_delay_s(), input.speed_mps, wheelbase, disturbance_.estimate());
+  // Stage 3, the delay prediction: with a known actuator delay and pose age the law acts on the
+  // pose at which this command will take effect. The commands issued over the last (delay + age)
+  // seconds are the ones in effect from the pose's time to then. The law steers the rear axle's
+  // course psi + beta_r (the kinematic model's heading).
+  const Pose2 law_pose = delay_.predict(
+      {input.rear_axle_position, input.heading_rad + input.rear_axle_side_slip_rad},
+      prediction_horizon_s(input), input.speed_mps, wheelbase, disturbance_.estimate());
 
   // One control period: the switching law is re-evaluated at every RK4 sub-step of the chain.
   // The first sub-step uses law_pose (measured, or predicted over the actuator delay); later ones
@@ -503,7 +504,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
 
   // Diagnostics of the real axles.
   const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
-  disturbance_.set_rear_path_curvature(rear_projection.curvature);
+  disturbance_.set_rear_path(rear_projection.curvature, rear_projection.lateral_error_m);
   const Vec2 front_axle = input.rear_axle_position + parameters_.chain.vehicle_wheelbase_m *
                                                          unit_from_heading(input.heading_rad);
   const PathProjection front_projection = path_->project(front_axle, front_hint_);
@@ -537,6 +538,7 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   diagnostics.path_arc_length_m = rear_projection.arc_length_m;
   diagnostics.path_curvature = rear_projection.curvature;
   diagnostics.fictive_steering_angle_rad = n > 0 ? angles_[0] : steering;
+  diagnostics.disturbance_curvature = disturbance_.estimate();
   return Status::ok;
 }
 

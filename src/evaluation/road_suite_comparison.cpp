@@ -1,16 +1,15 @@
 #include "smoothsteer/evaluation/road_suite_comparison.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 
+#include "car_schedule.hpp"
+#include "parallel_cases.hpp"
 #include "scenario_setup.hpp"
 #include "smoothsteer/baselines/comparison_controllers.hpp"
 #include "smoothsteer/runner/scenario.hpp"
@@ -49,27 +48,6 @@ void write_trace(const std::string& file, const std::vector<TraceSample>& trace)
   if (!out) throw std::runtime_error("road suite: writing " + file + " failed");
 }
 
-//! The certified route is the car's own: a road's `schedule: .../passenger_car_<X>.csv` becomes
-//! `.../<car>_<X>.csv` (the same `smoothsteer tune` command with the car's file), which must exist.
-std::vector<std::string> car_schedule(const Case& c, const std::string& car) {
-  const runner::Scenario road = runner::load_scenario(c.road_file);
-  const YAML::Node schedule = road.controller["schedule"];
-  if (!schedule || !schedule.IsScalar()) return {};
-  const std::filesystem::path given(schedule.Scalar());
-  const std::string name = given.filename().string();
-  const std::string prefix = "passenger_car_";
-  if (name.rfind(prefix, 0) != 0) return {};
-  const std::filesystem::path own = given.parent_path() / (car + "_" + name.substr(prefix.size()));
-  const std::filesystem::path resolved =
-      own.is_relative() ? std::filesystem::path(c.road_file).parent_path() / own : own;
-  if (!std::filesystem::is_regular_file(resolved)) {
-    throw std::invalid_argument(c.road_file + ": the certified route of " + car + " needs " +
-                                resolved.string() + " (smoothsteer tune with vehicles/" + car +
-                                ".yaml, as the road's schedule was made)");
-  }
-  return {"controller.schedule=" + own.string()};
-}
-
 //! The road's path (every piece of a plan) as x,y rows every 0.25 m, beside the traces; written
 //! to a file of its own and renamed, so that runs of the same road in parallel cannot mix it.
 void write_path(const std::string& directory, const runner::Scenario& scenario, std::size_t id) {
@@ -99,7 +77,9 @@ Outcome run_case(const Case& c, const std::string& trace_directory, std::size_t 
   const std::string vehicle = std::filesystem::absolute(c.vehicle_file).string();
   std::vector<std::string> overrides{"vehicle.file=" + vehicle, "model=" + c.model};
   if (c.controller == certified) {
-    for (std::string& o : car_schedule(c, stem(c.vehicle_file))) overrides.push_back(o);
+    for (std::string& o : detail::car_schedule(c.road_file, stem(c.vehicle_file))) {
+      overrides.push_back(o);
+    }
   }
   const runner::Scenario scenario = runner::load_scenario(c.road_file, overrides);
   runner::RunResult run;
@@ -188,24 +168,9 @@ RoadSuiteResult run_road_suite_comparison(const RoadSuiteOptions& options) {
     }
   }
   std::vector<Outcome> outcomes(cases.size());
-  std::atomic<std::size_t> next{0};
-  std::mutex failure_mutex;
-  std::string failure;
-  auto work = [&] {
-    for (std::size_t i = next++; i < cases.size(); i = next++) {
-      try {
-        outcomes[i] = run_case(cases[i], options.trace_directory, i);
-      } catch (const std::exception& error) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (failure.empty()) failure = error.what();
-      }
-    }
-  };
-  std::vector<std::thread> workers;
-  for (int t = 1; t < options.threads; ++t) workers.emplace_back(work);
-  work();
-  for (std::thread& worker : workers) worker.join();
-  if (!failure.empty()) throw std::runtime_error("road suite: " + failure);
+  detail::run_cases_in_parallel(cases.size(), options.threads, "road suite", [&](std::size_t i) {
+    outcomes[i] = run_case(cases[i], options.trace_directory, i);
+  });
 
   RoadSuiteResult result;
   ResultsTable& runs = result.runs;

@@ -73,7 +73,6 @@ nlohmann::json summary_json(const Scenario& scenario, const RunResult& result) {
 
 RunResult run_scenario(const Scenario& scenario, OutputDirectory& out) {
   const std::unique_ptr<SteeringController> controller = make_controller(scenario);
-  const std::unique_ptr<VehicleModel> model = make_vehicle_model(scenario);
   TraceCsvWriter trace(out.file("trace.csv").string());
   MetricsAccumulator metrics(scenario.metrics);
   RunResult result;
@@ -81,11 +80,7 @@ RunResult run_scenario(const Scenario& scenario, OutputDirectory& out) {
     trace.write(sample);
     metrics.add(sample);
   };
-  result.simulation = scenario.plan
-                          ? simulate(*scenario.plan, *model, scenario.actuator, scenario.speed,
-                                     scenario.simulation, scenario.start, *controller, observer)
-                          : simulate(*scenario.path, *model, scenario.actuator, scenario.speed,
-                                     scenario.simulation, scenario.start, *controller, observer);
+  result.simulation = simulate_scenario(scenario, *controller, observer);
   trace.close();
   result.metrics = metrics.result();
   result.controller_name = controller->name();

@@ -5,6 +5,7 @@
 #include <array>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 
 #include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/runner/controller_registry.hpp"
@@ -40,6 +41,112 @@ template <typename Validated>
 void check(const ConfigSection& c, const Validated& value) {
   if (const std::string error = value.validation_error(); !error.empty()) {
     throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error);
+  }
+}
+
+//! Reads a vehicle block (`key`: the vehicle file's keys under `file:`, overlaid with the
+//! block's own keys) into `vehicle`; returns the resolved mapping, `label` names where it came
+//! from in error messages.
+YAML::Node read_vehicle_block(const YAML::Node& node, const std::string& key,
+                              const std::string& file, const std::string& directory,
+                              const std::shared_ptr<std::set<std::string>>& overridden,
+                              VehicleParameters& vehicle, std::string& name, std::string& source,
+                              std::string& label) {
+  YAML::Node merged(YAML::NodeType::Map);
+  label = file;
+  if (node && node["file"]) {
+    ConfigSection vehicle_keys(node, key, file);
+    vehicle_keys.set_overridden_keys(overridden);
+    const std::string file_name = vehicle_keys.text("file", "");
+    if (file_name.empty()) vehicle_keys.fail("file", "expected the name of a vehicle YAML file");
+    std::filesystem::path vehicle_file(file_name);
+    if (vehicle_file.is_relative()) vehicle_file = std::filesystem::path(directory) / vehicle_file;
+    YAML::Node from_file;
+    try {
+      from_file = load_yaml_file(vehicle_file.string());
+    } catch (const ConfigError& error) {
+      vehicle_keys.fail("file", error.what());  // names the key that gave the file
+    }
+    if (!from_file.IsMap()) throw ConfigError(vehicle_file.string() + ": expected a mapping");
+    for (const auto& entry : from_file) merged[entry.first.as<std::string>()] = entry.second;
+    label = file + " (vehicle file " + vehicle_file.string() + ")";
+  }
+  if (node && node.IsMap()) {
+    for (const auto& entry : node) {
+      if (entry.first.as<std::string>() != "file") overlay(merged, entry);
+    }
+  }
+  ConfigSection section(merged, key, label);
+  section.set_overridden_keys(overridden);
+  YAML::Node resolved = read_vehicle_section(section, vehicle, name, source);
+  if (node && node["file"]) resolved["file"] = node["file"];
+  return resolved;
+}
+
+//! The simulation keys of the plant-only model error and the imperfect sensors
+//! (plant_imperfections.hpp): the truth's vehicle block, scales, crossfall, side force, the
+//! pose's latency and rate, sensor offsets. Ranges as SimulationParameters::first_violation.
+void read_imperfections(ConfigSection& sim, Scenario& s, const std::string& file,
+                        const std::string& directory,
+                        const std::shared_ptr<std::set<std::string>>& overridden) {
+  SimulationParameters& p = s.simulation;
+  if (sim.has("plant_vehicle")) {
+    YAML::Node node = sim.raw("plant_vehicle");
+    if (!node.IsMap()) sim.fail("plant_vehicle", "expected a mapping (e.g. {file: ...})");
+    VehicleParameters& truth = s.plant_vehicle.emplace();
+    std::string label, source;
+    sim.store("plant_vehicle",
+              read_vehicle_block(node, sim.full_key("plant_vehicle"), file, directory, overridden,
+                                 truth, s.plant_vehicle_name, source, label));
+    if (s.model == "double_track" && !truth.double_track) {
+      throw ConfigError(label + ": key '" + sim.full_key("plant_vehicle") +
+                        ".double_track': is required by model: double_track");
+    }
+  }
+  ConfigSection scales = sim.section("plant_scales");
+  p.plant_scales.mass = scales.number("mass", 1.0, {0.5, 2.0});
+  p.plant_scales.yaw_inertia = scales.number("yaw_inertia", 1.0, {0.5, 2.0});
+  p.plant_scales.cornering_stiffness = scales.number("cornering_stiffness", 1.0, {0.5, 2.0});
+  p.plant_scales.friction = scales.number("friction", 1.0, {0.1, 1.5});
+  p.plant_scales.cg_position = scales.number("cg_position", 0.0, {-0.25, 0.25});
+  scales.finish();
+  sim.store("plant_scales", scales.resolved());
+  ConfigSection actuator = sim.section("plant_actuator_scales");
+  p.plant_actuator_scales.dead_time = actuator.number("dead_time", 1.0, {0.5, 1.5});
+  p.plant_actuator_scales.bandwidth = actuator.number("bandwidth", 1.0, {0.5, 1.5});
+  actuator.finish();
+  sim.store("plant_actuator_scales", actuator.resolved());
+  p.crossfall = sim.number("crossfall", 0.0, {-0.1, 0.1});
+  ConfigSection side = sim.section("side_force");
+  p.side_force.force_n = side.number("force_n", 0.0, {-1e5, 1e5});
+  p.side_force.yaw_moment_nm = side.number("yaw_moment_nm", 0.0, {-1e6, 1e6});
+  p.side_force.start_s = side.number("start_s", 0.0, {0.0, 3600.0});
+  side.finish();
+  sim.store("side_force", side.resolved());
+  p.pose_latency_s =
+      sim.number("pose_latency_s", 0.0, {0.0, SimulationParameters::max_pose_latency_s});
+  if (sim.has("pose_rate_hz")) {
+    p.pose_rate_hz =
+        sim.required_number("pose_rate_hz", {SimulationParameters::min_pose_rate_hz, 1000.0});
+  }
+  p.steering_angle_sensor_offset_rad =
+      sim.number("steering_angle_sensor_offset_rad", 0.0, {-0.1, 0.1});
+  p.gyro_bias_radps = sim.number("gyro_bias_radps", 0.0, {-0.5, 0.5});
+
+  // What acts through tire forces needs a plant that has them (model: dynamic or double_track).
+  if (s.model == "kinematic") {
+    const char* why =
+        "acts through the tires' lateral forces, which the kinematic plant has not (its rear "
+        "axle rolls without slip): use model: dynamic or double_track, or "
+        "plant_curvature_disturbance";
+    if (p.crossfall != 0.0) sim.fail("crossfall", why);
+    if (p.side_force.active()) sim.fail("side_force", why);
+    if (!p.plant_scales.identity()) sim.fail("plant_scales", why);
+  }
+  try {
+    (void)scaled_plant_vehicle(s.plant_vehicle.value_or(s.vehicle), p.plant_scales);
+  } catch (const std::invalid_argument& error) {
+    sim.fail("plant_scales", error.what());
   }
 }
 
@@ -101,41 +208,16 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   if (vehicle_node && !vehicle_node.IsNull() && !vehicle_node.IsMap()) {
     c.fail("vehicle", "expected a mapping");
   }
-  YAML::Node merged(YAML::NodeType::Map);
-  std::string vehicle_label = file;
-  if (vehicle_node && vehicle_node["file"]) {
-    ConfigSection vehicle_keys(vehicle_node, "vehicle", file);
-    vehicle_keys.set_overridden_keys(overridden);
-    const std::string name = vehicle_keys.text("file", "");
-    if (name.empty()) vehicle_keys.fail("file", "expected the name of a vehicle YAML file");
-    std::filesystem::path vehicle_file(name);
-    if (vehicle_file.is_relative()) vehicle_file = std::filesystem::path(directory) / vehicle_file;
-    YAML::Node from_file;
-    try {
-      from_file = load_yaml_file(vehicle_file.string());
-    } catch (const ConfigError& error) {
-      vehicle_keys.fail("file", error.what());  // names the key that gave the file
-    }
-    if (!from_file.IsMap()) throw ConfigError(vehicle_file.string() + ": expected a mapping");
-    for (const auto& entry : from_file) merged[entry.first.as<std::string>()] = entry.second;
-    vehicle_label = file + " (vehicle file " + vehicle_file.string() + ")";
-  }
-  if (vehicle_node && vehicle_node.IsMap()) {
-    for (const auto& entry : vehicle_node) {
-      if (entry.first.as<std::string>() != "file") overlay(merged, entry);
-    }
-  }
-  ConfigSection vehicle(merged, "vehicle", vehicle_label);
-  vehicle.set_overridden_keys(overridden);
+  std::string vehicle_label;
   YAML::Node resolved_vehicle =
-      read_vehicle_section(vehicle, s.vehicle, s.vehicle_name, s.vehicle_source);
+      read_vehicle_block(vehicle_node, "vehicle", file, directory, overridden, s.vehicle,
+                         s.vehicle_name, s.vehicle_source, vehicle_label);
   if (s.model == "double_track" && !s.vehicle.double_track) {
     throw ConfigError(vehicle_label +
                       ": key 'vehicle.double_track': is required by model: "
                       "double_track (tracks, roll inertia, roll stiffness and damping, drive and "
                       "brake shares; docs/scenarios.md)");
   }
-  if (vehicle_node && vehicle_node["file"]) resolved_vehicle["file"] = vehicle_node["file"];
 
   ConfigSection actuator = c.section("actuator");
   ActuatorParameters& a = s.actuator;
@@ -198,6 +280,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   p.matched_disturbance = sim.number("matched_disturbance", 0.0, {-1.0, 1.0});
   p.plant_curvature_disturbance = sim.number("plant_curvature_disturbance", 0.0, {-1.0, 1.0});
   p.steering_offset_rad = sim.number("steering_offset_rad", 0.0, {-0.1, 0.1});
+  read_imperfections(sim, s, file, directory, overridden);
   p.position_noise_std_m = sim.number("position_noise_std_m", 0.0, Range::non_negative());
   p.heading_noise_std_rad = sim.number("heading_noise_std_rad", 0.0, Range::non_negative());
   p.noise_seed = static_cast<std::uint64_t>(sim.integer("noise_seed", 1, 0, 2147483647));
@@ -293,21 +376,31 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
 }
 
 std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& s) {
-  if (s.model == "kinematic") return std::make_unique<KinematicVehicleModel>(s.vehicle);
-  if (s.model == "double_track") return std::make_unique<DoubleTrack>(s.vehicle);
-  return std::make_unique<DynamicSingleTrack>(s.vehicle);
+  const VehicleParameters& truth = s.plant_vehicle.value_or(s.vehicle);
+  if (s.model == "kinematic") return std::make_unique<KinematicVehicleModel>(truth);
+  if (s.model == "double_track") return std::make_unique<DoubleTrack>(truth);
+  return std::make_unique<DynamicSingleTrack>(truth);
 }
 
 std::unique_ptr<SteeringController> make_controller(const Scenario& s) {
   return make_controller(s.controller, "controller", s.file, {s.path, s.vehicle, s.actuator});
 }
 
+SimulationResult simulate_scenario(const Scenario& s, SteeringController& controller,
+                                   const TraceObserver& observer) {
+  const std::unique_ptr<VehicleModel> model = make_vehicle_model(s);
+  // The side-slip observer believes the scenario's vehicle, not the plant's.
+  s.simulation.validate();
+  SteeringSystem system(controller, steering_system_parameters(s.simulation.side_slip, s.vehicle));
+  return s.plan ? simulate(*s.plan, *model, s.actuator, s.speed, s.simulation, s.start, system,
+                           observer)
+                : simulate(*s.path, *model, s.actuator, s.speed, s.simulation, s.start, system,
+                           observer);
+}
+
 RunResult run_scenario(const Scenario& s, SteeringController& controller) {
   RunResult result;
-  const std::unique_ptr<VehicleModel> model = make_vehicle_model(s);
-  result.simulation =
-      s.plan ? simulate(*s.plan, *model, s.actuator, s.speed, s.simulation, s.start, controller)
-             : simulate(*s.path, *model, s.actuator, s.speed, s.simulation, s.start, controller);
+  result.simulation = simulate_scenario(s, controller);
   result.metrics = compute_metrics(result.simulation.trace, s.metrics);
   result.controller_name = controller.name();
   return result;

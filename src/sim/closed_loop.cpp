@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,7 @@
 
 #include "closed_loop.hpp"
 #include "plant_integration.hpp"
+#include "pose_delay.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/sim/closed_loop_count.hpp"
 #include "smoothsteer/sim/gear_changes.hpp"
@@ -76,7 +78,7 @@ std::string controller_error_detail(Status status, const ControllerInput& input,
 
 namespace detail {
 
-SimulationResult closed_loop(const Path& path, const PathPlan* plan, const VehicleModel& vehicle,
+SimulationResult closed_loop(const Path& path, const PathPlan* plan, const VehicleModel& told,
                              const ActuatorParameters& actuator_parameters,
                              const SpeedProfile& speed, const SimulationParameters& parameters,
                              const Pose2& start, SteeringSystem& system,
@@ -88,9 +90,24 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
     check_gear_changes(*plan, speed, parameters.control_period_s);
     gear_switches = gear_changes(speed);
   }
+  // The plant: the given model and actuator, or copies with the plant-only scales.
+  std::unique_ptr<VehicleModel> scaled_vehicle;
+  const VehicleModel& vehicle = plant_model(told, parameters.plant_scales, scaled_vehicle);
+  if (dynamic_cast<const KinematicVehicleModel*>(&vehicle) &&
+      (parameters.crossfall != 0.0 || parameters.side_force.active())) {
+    throw std::invalid_argument(
+        "SimulationParameters: crossfall and side_force act through the tires' lateral forces, "
+        "which the kinematic plant has not (its rear axle rolls without slip); use the dynamic "
+        "or double_track plant, or plant_curvature_disturbance");
+  }
+  SteeringActuator actuator(
+      parameters.plant_actuator_scales.identity()
+          ? actuator_parameters
+          : scaled_plant_actuator(actuator_parameters, parameters.plant_actuator_scales,
+                                  parameters.substep_s),
+      parameters.substep_s);
   detail::count_closed_loop();
   const VehicleParameters& car = vehicle.parameters();
-  SteeringActuator actuator(actuator_parameters, parameters.substep_s);
   actuator.reset(0.0);
   const int substeps =
       static_cast<int>(std::lround(parameters.control_period_s / parameters.substep_s));
@@ -118,18 +135,23 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
                                    (system.set_matched_disturbance(parameters.matched_disturbance)
                                         ? 0.0
                                         : parameters.matched_disturbance);
-  const detail::PlantContext plant{vehicle,
-                                   speed,
-                                   actuator,
-                                   plant_disturbance,
-                                   parameters.substep_s,
-                                   substeps,
-                                   parameters.integrator,
-                                   parameters.integrator_tolerance,
-                                   &result.model_evaluations,
-                                   &result.plant_fallback_periods,
-                                   input_buffer.data(),
-                                   parameters.steering_offset_rad};
+  const detail::PlantContext plant{
+      vehicle,
+      speed,
+      actuator,
+      plant_disturbance,
+      parameters.substep_s,
+      substeps,
+      parameters.integrator,
+      parameters.integrator_tolerance,
+      &result.model_evaluations,
+      &result.plant_fallback_periods,
+      input_buffer.data(),
+      parameters.steering_offset_rad,
+      crossfall_lateral_acceleration(parameters.crossfall, car.gravity_mps2),
+      parameters.side_force};
+  PoseDelay pose_delay(parameters.pose_latency_s, parameters.pose_rate_hz,
+                       parameters.control_period_s, start, speed.speed(0.0));
 
   std::mt19937_64 engine(parameters.noise_seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);
@@ -163,8 +185,9 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
     }
     const Pose2 rear = rear_axle_pose(state, car);
     SteeringSystemInput input;
-    input.rear_axle_position = rear.position;
-    input.heading_rad = rear.heading_rad;
+    const Pose2 localized = pose_delay.deliver(k, rear);
+    input.rear_axle_position = localized.position;
+    input.heading_rad = localized.heading_rad;
     input.speed_mps = state.vx_mps;
     input.acceleration_mps2 = speed.acceleration(t);
     input.period_s = parameters.control_period_s;
@@ -176,11 +199,19 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
     const double true_rear_slip = rear_axle_side_slip_angle(state, car);
     input.rear_axle_side_slip_rad = true_rear_slip;
     input.steering_angle_rad = actuator.angle();
+    if (parameters.steering_angle_sensor_offset_rad != 0.0) {
+      input.steering_angle_rad = actuator.angle() + parameters.steering_angle_sensor_offset_rad;
+    }
+    // The gyro and the accelerometer (the specific force: the crossfall's gravity is not in it,
+    // a side force is) on time, whoever reads them; their noise only for the observer.
+    input.yaw_rate_radps = state.yaw_rate_radps;
+    if (parameters.gyro_bias_radps != 0.0) input.yaw_rate_radps += parameters.gyro_bias_radps;
+    const VehicleState rates = vehicle.derivative(state, actuator.angle(), input.acceleration_mps2);
+    input.lateral_acceleration_mps2 = rates.vy_mps + state.vx_mps * state.yaw_rate_radps;
+    if (parameters.side_force.active()) {
+      input.lateral_acceleration_mps2 += detail::body_acceleration(plant, state, t, false).lateral;
+    }
     if (observed) {
-      const VehicleState rates =
-          vehicle.derivative(state, actuator.angle(), input.acceleration_mps2);
-      input.yaw_rate_radps = state.yaw_rate_radps;
-      input.lateral_acceleration_mps2 = rates.vy_mps + state.vx_mps * state.yaw_rate_radps;
       if (sensors.yaw_rate_noise_std_radps > 0.0) {
         input.yaw_rate_radps += sensors.yaw_rate_noise_std_radps * unit_normal(engine);
       }

@@ -30,9 +30,9 @@ double effective(const PlantContext& c, double delta) noexcept {
 }
 
 VehicleState derivative(const PlantContext& c, const VehicleState& s, double delta,
-                        double acceleration) noexcept {
+                        double acceleration, double t) noexcept {
   if (c.model_evaluations) ++*c.model_evaluations;
-  return c.model.derivative(s, delta, acceleration);
+  return plant_derivative(c, s, delta, acceleration, t);
 }
 
 //! Speed of the rear axle from the state and its derivative (model-independent: the kinematic
@@ -45,12 +45,13 @@ double rear_axle_speed(const VehicleState& s, const VehicleState& d, double lr) 
 
 // ---- fixed: RK4 at the sub-step (the method of earlier releases) ----
 
-VehicleState rk4_step(const PlantContext& c, const VehicleState& state, double h,
+VehicleState rk4_step(const PlantContext& c, const VehicleState& state, double time, double h,
                       double delta_start, double delta_end, double acceleration) noexcept {
   const PlantArray x = state.to_array();
   auto eval = [&](const PlantArray& y, double fraction) {
     const double delta = delta_start + fraction * (delta_end - delta_start);
-    return derivative(c, VehicleState::from_array(y), delta, acceleration).to_array();
+    return derivative(c, VehicleState::from_array(y), delta, acceleration, time + 0.5 * h)
+        .to_array();
   };
   auto shifted = [&](const PlantArray& k, double scale) {
     PlantArray y = x;
@@ -83,8 +84,8 @@ void fixed_substep(const PlantContext& c, double time, double delayed, VehicleSt
   const double delta_end = effective(c, actuator.angle());
   const double acceleration = c.speed.acceleration(time + 0.5 * h);
   const VehicleState before = state;
-  state = rk4_step(c, state, h, actuator.parameters().ideal ? delta_end : delta_start, delta_end,
-                   acceleration);
+  state = rk4_step(c, state, time, h, actuator.parameters().ideal ? delta_end : delta_start,
+                   delta_end, acceleration);
   c.model.constrain(state, delta_end);
   const double rear_vy_before = before.vy_mps - car.cg_to_rear_axle_m * before.yaw_rate_radps;
   const double rear_vy_after = state.vy_mps - car.cg_to_rear_axle_m * state.yaw_rate_radps;
@@ -113,7 +114,8 @@ void solve_piece(const PlantContext& c, double origin, double from, double to,
     PlantArray x;
     std::copy_n(y.begin(), x.size(), x.begin());
     const VehicleState s = VehicleState::from_array(x);
-    const VehicleState d = derivative(c, s, effective(c, delta_of(t - origin)), acceleration);
+    const VehicleState d =
+        derivative(c, s, effective(c, delta_of(t - origin)), acceleration, 0.5 * (from + to));
     const PlantArray dx = d.to_array();
     std::copy(dx.begin(), dx.end(), dydt.begin());
     dydt.back() = rear_axle_speed(s, d, lr);
@@ -176,6 +178,7 @@ void solve_adaptive(const PlantContext& c, double t0, double h, const DeltaOf& d
     kinks.add(c.speed.start_time_s - t0);
     kinks.add(c.speed.start_time_s + c.speed.ramp_duration_s() - t0);
   }
+  if (c.side_force.active()) kinks.add(c.side_force.start_s - t0);  // the gust's step
   if (c.speed.knots) {  // the knots of a tabulated profile inside the period
     const std::vector<SpeedKnot>& knots = *c.speed.knots;
     std::size_t i = c.speed.knot_interval(t0);
@@ -198,6 +201,33 @@ void solve_adaptive(const PlantContext& c, double t0, double h, const DeltaOf& d
 }
 
 }  // namespace
+
+BodyAcceleration body_acceleration(const PlantContext& c, const VehicleState& s, double t,
+                                   bool with_crossfall) noexcept {
+  // Forces on the body, which the tires carry; the double track's roll does not see them.
+  const VehicleParameters& p = c.model.parameters();
+  const double kinetic = std::clamp(
+      (s.vx_mps - p.kinematic_below_mps) / (p.kinetic_above_mps - p.kinematic_below_mps), 0.0, 1.0);
+  BodyAcceleration a;
+  if (with_crossfall) a.lateral = c.crossfall_acceleration_mps2;
+  if (c.side_force.active() && t >= c.side_force.start_s) {
+    a.lateral += c.side_force.force_n / p.mass_kg;
+    a.yaw = c.side_force.yaw_moment_nm / p.yaw_inertia_kgm2;
+  }
+  a.lateral *= kinetic;
+  a.yaw *= kinetic;
+  return a;
+}
+
+VehicleState plant_derivative(const PlantContext& c, const VehicleState& s, double delta,
+                              double acceleration, double t) noexcept {
+  VehicleState d = c.model.derivative(s, delta, acceleration);
+  if (!c.external()) return d;
+  const BodyAcceleration a = body_acceleration(c, s, t, true);
+  d.vy_mps += a.lateral;
+  d.yaw_rate_radps += a.yaw;
+  return d;
+}
 
 double advance_plant(const PlantContext& c, double t, double command, VehicleState& state,
                      double& distance_m) noexcept {

@@ -31,7 +31,31 @@ struct PlantContext {
   std::uint64_t* fallback_periods = nullptr;  //!< periods left to fixed_rk4 by rkf78 / dopri5
   double* input_buffer = nullptr;             //!< room for `substeps` delayed inputs
   double steering_offset_rad = 0.0;           //!< the road wheels steer delta + this [rad]
+  //! Lateral acceleration of the crossfall on the body, -g sin(phi) [m/s^2].
+  double crossfall_acceleration_mps2 = 0.0;
+  SideForce side_force;  //!< on the body from side_force.start_s on
+  //! Whether the two above act (false: the model's derivative as it is).
+  bool external() const noexcept {
+    return crossfall_acceleration_mps2 != 0.0 || side_force.active();
+  }
 };
+
+//! What the crossfall (with_crossfall) and the side force of `c` add to the body's lateral
+//! acceleration [m/s^2] and yaw acceleration [rad/s^2] at time t, faded out with the model's
+//! blend to the kinematic model at low speed (a car at rest on a cross slope does not slide).
+struct BodyAcceleration {
+  double lateral = 0.0;
+  double yaw = 0.0;
+};
+BodyAcceleration body_acceleration(const PlantContext& c, const VehicleState& state, double t,
+                                   bool with_crossfall) noexcept;
+
+//! The model's derivative with the crossfall and the side force of `c` at time `t` added. The
+//! integrators pass the middle of the piece they integrate (split at the side force's start),
+//! as for the speed profile's acceleration: a step read at a stage time on the piece's end
+//! would leak into the piece before it.
+VehicleState plant_derivative(const PlantContext& c, const VehicleState& state, double delta,
+                              double acceleration, double t) noexcept;
 
 //! Advances the vehicle state, the actuator (its delay line included) and the travelled
 //! distance of the rear axle over one control period from time t with the held command.

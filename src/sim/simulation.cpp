@@ -8,6 +8,74 @@
 #include "closed_loop.hpp"
 
 namespace smoothsteer {
+namespace {
+
+//! The rules of the plant-only imperfections (plant_imperfections.hpp).
+std::optional<Violation> imperfection_violation(const SimulationParameters& p) noexcept {
+  auto bad = [](const char* field, double value, const char* rule,
+                double reference = std::numeric_limits<double>::quiet_NaN()) {
+    return Violation{"SimulationParameters", "", field, value, rule, reference};
+  };
+  auto within = [](double value, double lo, double hi) { return value >= lo && value <= hi; };
+  const PlantScales& scales = p.plant_scales;
+  if (!within(scales.mass, 0.5, 2.0)) {
+    return bad("plant_scales.mass", scales.mass, "must be in [0.5, 2]");
+  }
+  if (!within(scales.yaw_inertia, 0.5, 2.0)) {
+    return bad("plant_scales.yaw_inertia", scales.yaw_inertia, "must be in [0.5, 2]");
+  }
+  if (!within(scales.cornering_stiffness, 0.5, 2.0)) {
+    return bad("plant_scales.cornering_stiffness", scales.cornering_stiffness,
+               "must be in [0.5, 2]");
+  }
+  if (!within(scales.friction, 0.1, 1.5)) {
+    return bad("plant_scales.friction", scales.friction, "must be in [0.1, 1.5]");
+  }
+  if (!within(scales.cg_position, -0.25, 0.25)) {
+    return bad("plant_scales.cg_position", scales.cg_position,
+               "must be in [-0.25, 0.25] (a fraction of the wheelbase)");
+  }
+  if (!within(p.plant_actuator_scales.dead_time, 0.5, 1.5)) {
+    return bad("plant_actuator_scales.dead_time", p.plant_actuator_scales.dead_time,
+               "must be in [0.5, 1.5]");
+  }
+  if (!within(p.plant_actuator_scales.bandwidth, 0.5, 1.5)) {
+    return bad("plant_actuator_scales.bandwidth", p.plant_actuator_scales.bandwidth,
+               "must be in [0.5, 1.5]");
+  }
+  if (!within(p.crossfall, -0.1, 0.1)) {
+    return bad("crossfall", p.crossfall, "must be in [-0.1, 0.1] (a grade, tan of the angle)");
+  }
+  if (!within(p.side_force.force_n, -1e5, 1e5)) {
+    return bad("side_force.force_n", p.side_force.force_n, "must be in [-1e5, 1e5] N");
+  }
+  if (!within(p.side_force.yaw_moment_nm, -1e6, 1e6)) {
+    return bad("side_force.yaw_moment_nm", p.side_force.yaw_moment_nm,
+               "must be in [-1e6, 1e6] N m");
+  }
+  if (!within(p.side_force.start_s, 0.0, 3600.0)) {
+    return bad("side_force.start_s", p.side_force.start_s, "must be in [0, 3600] s");
+  }
+  if (!within(p.pose_latency_s, 0.0, SimulationParameters::max_pose_latency_s)) {
+    return bad("pose_latency_s", p.pose_latency_s, "must be in [0, 0.5] s");
+  }
+  if (p.pose_rate_hz && !within(*p.pose_rate_hz, SimulationParameters::min_pose_rate_hz,
+                                (1.0 + 1e-9) / p.control_period_s)) {
+    return bad("pose_rate_hz", *p.pose_rate_hz,
+               "must be in [1, 1 / control_period_s] Hz; 1 / control_period_s =",
+               1.0 / p.control_period_s);
+  }
+  if (!within(p.steering_angle_sensor_offset_rad, -0.1, 0.1)) {
+    return bad("steering_angle_sensor_offset_rad", p.steering_angle_sensor_offset_rad,
+               "must be in [-0.1, 0.1] rad");
+  }
+  if (!within(p.gyro_bias_radps, -0.5, 0.5)) {
+    return bad("gyro_bias_radps", p.gyro_bias_radps, "must be in [-0.5, 0.5] rad/s");
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 PlantIntegrator default_plant_integrator() noexcept {
 #if SMOOTHSTEER_HAS_ODEINT
@@ -67,6 +135,7 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
   if (!std::isfinite(steering_offset_rad) || std::abs(steering_offset_rad) > 0.1) {
     return bad("steering_offset_rad", steering_offset_rad, "must be in [-0.1, 0.1] rad");
   }
+  if (const auto violation = imperfection_violation(*this)) return violation;
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
     return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
   }

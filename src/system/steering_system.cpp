@@ -156,6 +156,7 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   SideSlipDiagnostics slip;
   controller_input_ = {input.rear_axle_position, input.heading_rad, input.speed_mps,
                        input.acceleration_mps2, input.period_s};
+  controller_input_.pose_age_s = input.pose_age_s;
   // Every input is checked before any stage takes it: an error changes no state.
   if (!valid_input(input)) return Status::invalid_input;
   controller_input_.rear_axle_side_slip_rad = rear_axle_side_slip(input, slip);

@@ -45,7 +45,10 @@ class LeadWheelController final : public SteeringController {
   //! chain's within the rate limit (the governor's R, else the certified rate |v|
   //! certificate().rate_per_meter), not at once. invalid_input, and nothing changes, for an
   //! angle valid_reset_angle() refuses with the governor's max_steering_angle_rad.
+  //! The disturbance estimate persists across it (DisturbanceEstimator::reset()).
   Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  //! Clears the disturbance estimate (a new car, a wheel alignment, a test from scratch).
+  void forget_disturbance_estimate() noexcept { disturbance_.forget(); }
   const char* name() const noexcept override { return "lead_wheel"; }
   //! Replanning (SteeringController::set_path): swaps the path and re-seeds the three hints;
   //! the chain state, direction and delay history carry on, so delta_veh stays continuous
@@ -121,6 +124,12 @@ class LeadWheelController final : public SteeringController {
   double compensated_delay_s() const noexcept {
     return parameters_.delay_compensation.enabled ? parameters_.delay_compensation.actuator_delay_s
                                                   : 0.0;
+  }
+  //! How far back the pose's information lies behind the moment this command takes effect [s]:
+  //! the Smith predictor's delay plus the pose's age. The prediction and the disturbance
+  //! estimate's "command in effect" both reach back this far.
+  double prediction_horizon_s(const ControllerInput& input) const noexcept {
+    return compensated_delay_s() + input.pose_age_s;
   }
   //! The rate [rad/s] at which the command approaches the chain's after a reset beyond the set.
   double approach_rate_radps(double speed) const noexcept;

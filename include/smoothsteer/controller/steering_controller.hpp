@@ -30,6 +30,16 @@ struct ControllerInput {
   //! Measured by a slip sensor or estimated by SideSlipObserver. |beta_r| <= max_side_slip_rad.
   double rear_axle_side_slip_rad = 0.0;
   static constexpr double max_side_slip_rad = 0.5;
+  //! How old the pose (rear_axle_position, heading_rad, rear_axle_side_slip_rad) is when update()
+  //! runs [s]: localization delivers it late (20-100 ms in driving stacks), while speed and the
+  //! commands are current. The lead-wheel controller carries the pose forward over this age
+  //! through its own commands in effect since then, as its delay prediction carries it over the
+  //! actuator's delay (docs/controller.md, "Pose latency"). The comparison controllers take the
+  //! pose as it is. 0 (the default): the pose is current. 0 <= pose_age_s <= max_pose_age_s.
+  double pose_age_s = 0.0;
+  //! Half the span of the command history the prediction reads (DelayPrediction::capacity
+  //! periods of 2 ms cover 1 s, shared with the actuator delay).
+  static constexpr double max_pose_age_s = 0.5;
 };
 
 //! Diagnostics of the path-tracking state (all relative to the reference path).
@@ -45,6 +55,9 @@ struct TrackingDiagnostics {
   double path_arc_length_m = 0.0;       //!< s of the rear axle's closest point
   double path_curvature = 0.0;          //!< path curvature at the rear axle's closest point
   double fictive_steering_angle_rad = 0.0;  //!< delta_1 of the fictive chain
+  //! The estimate of the curvature the plant adds at the rear axle (a rack offset, crossfall,
+  //! crosswind; docs/feedforward.md section 7) [1/m]; 0 without the estimation.
+  double disturbance_curvature = 0.0;
 };
 
 struct ControllerOutput {
@@ -75,7 +88,8 @@ inline bool input_in_range(const ControllerInput& input) noexcept {
          within(input.heading_rad, R::max_abs_heading_rad) &&
          within(input.speed_mps, R::max_abs_speed_mps) &&
          within(input.acceleration_mps2, R::max_abs_acceleration_mps2) && input.period_s > 0.0 &&
-         input.period_s <= R::max_period_s &&
+         input.period_s <= R::max_period_s && input.pose_age_s >= 0.0 &&
+         input.pose_age_s <= ControllerInput::max_pose_age_s &&
          within(input.rear_axle_side_slip_rad, ControllerInput::max_side_slip_rad);
 }
 

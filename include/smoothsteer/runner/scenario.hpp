@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -34,6 +35,10 @@ struct Scenario {
   ActuatorParameters actuator;
   SpeedProfile speed;
   SimulationParameters simulation;
+  //! The plant's own vehicle (simulation.plant_vehicle: the truth), absent: the plant is
+  //! `vehicle`, which the controller is told in either case.
+  std::optional<VehicleParameters> plant_vehicle;
+  std::string plant_vehicle_name;
   MetricsParameters metrics;
   Pose2 start;                       //!< rear-axle start pose
   std::shared_ptr<const Path> path;  //!< the path; with gear changes, the plan's piece 0
@@ -60,9 +65,17 @@ std::shared_ptr<const Path> make_path(io::ConfigSection& path_section,
                                       const std::string& base_directory,
                                       std::shared_ptr<const PathPlan>* plan = nullptr);
 
+//! The plant's model: simulation.plant_vehicle, else the scenario's vehicle (the plant-only
+//! scales are applied by simulate()).
 std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& scenario);
 //! Builds the scenario's controller through the registry.
 std::unique_ptr<SteeringController> make_controller(const Scenario& scenario);
+
+//! Simulates the scenario with `controller` (the one wiring of the CLI, run_scenario() and
+//! Python): the plant from make_vehicle_model(), the car's steering system believing the
+//! scenario's vehicle. With an observer the samples stream to it (simulate()).
+SimulationResult simulate_scenario(const Scenario& scenario, SteeringController& controller,
+                                   const TraceObserver& observer = {});
 
 struct RunResult {
   SimulationResult simulation;

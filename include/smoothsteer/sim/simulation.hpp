@@ -18,6 +18,7 @@
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/path/path_plan.hpp"
+#include "smoothsteer/sim/plant_imperfections.hpp"
 #include "smoothsteer/sim/speed_profile.hpp"
 #include "smoothsteer/system/steering_system.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
@@ -91,6 +92,26 @@ struct SimulationParameters {
   //! Constant offset of the road wheels from the angle the actuator delivers [rad] (a
   //! misaligned rack or wheel alignment): the plant steers delta + offset; |offset| <= 0.1.
   double steering_offset_rad = 0.0;
+  //! Model error and imperfections of the car, given to the plant and the sensors only
+  //! (plant_imperfections.hpp, docs/simulation.md): the controller is told none of them.
+  PlantScales plant_scales;                   //!< the plant's vehicle (kinetic plants only)
+  PlantActuatorScales plant_actuator_scales;  //!< the simulated actuator
+  //! Crossfall of the road as a grade tan(phi), |.| <= 0.1; positive: the road falls to the
+  //! car's right, which pushes it right (a_y = -g sin(phi); kinetic plants only).
+  double crossfall = 0.0;
+  SideForce side_force;  //!< crosswind or a gust step on the body (kinetic plants only)
+  //! The pose (rear-axle position and heading) is delivered this late [s], in [0, 0.5]; speed,
+  //! gyro, accelerometer and steering angle stay on time. Between control instants the pose is
+  //! interpolated linearly; before t = 0 it is the straight drive the run starts from.
+  double pose_latency_s = 0.0;
+  //! The pose updates at this rate [Hz] in [1, 1 / control_period_s] and is held in between
+  //! (still pose_latency_s late): at t the pose sampled at floor((t - latency) f) / f. Absent:
+  //! every control step.
+  std::optional<double> pose_rate_hz;
+  //! The measured road-wheel angle reads this much more than the actuator delivers [rad],
+  //! |.| <= 0.1 (the rack itself true; steering_offset_rad is the opposite case).
+  double steering_angle_sensor_offset_rad = 0.0;
+  double gyro_bias_radps = 0.0;        //!< added to the measured yaw rate [rad/s], |.| <= 0.5
   double position_noise_std_m = 0.0;   //!< std of Gaussian noise on x and y of the rear axle [m]
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
@@ -101,6 +122,8 @@ struct SimulationParameters {
   //! substep_s).
   static constexpr double max_control_steps = 1e7;
   static constexpr double max_substeps = 1e8;
+  static constexpr double max_pose_latency_s = 0.5;
+  static constexpr double min_pose_rate_hz = 1.0;
 
   //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
   std::optional<Violation> first_violation() const noexcept;

@@ -86,6 +86,9 @@ struct SteeringSystemInput {
   std::optional<double> steering_angle_rad;
   //! A slip sensor's beta_r [rad] (SlipInput::sensor); absent: 0.
   std::optional<double> rear_axle_side_slip_rad;
+  //! How old the pose (position and heading) is [s]: ControllerInput::pose_age_s. The other
+  //! signals are taken as current.
+  double pose_age_s = 0.0;
 };
 
 //! Which limits the command is at (a bit set; SteeringSystemOutput::active_limits). Derived from

@@ -65,6 +65,10 @@ class DoubleTrack final : public VehicleModel {
   VehicleState derivative_with_drive_force(const VehicleState& state, double steering_angle_rad,
                                            double drive_force_n) const noexcept;
   const char* name() const noexcept override { return "double_track"; }
+  std::unique_ptr<VehicleModel> with_parameters(
+      const VehicleParameters& parameters) const override {
+    return std::make_unique<DoubleTrack>(parameters);
+  }
 
   //! Wheel order: front left, front right, rear left, rear right.
   struct WheelForces {

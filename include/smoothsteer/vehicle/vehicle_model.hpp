@@ -8,6 +8,7 @@
 //! profile), i.e. the longitudinal force is whatever the profile requires.
 
 #include <array>
+#include <memory>
 
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/vehicle/kinematic_single_track.hpp"
@@ -65,6 +66,13 @@ class VehicleModel {
     (void)steering_angle_rad;
   }
   virtual const char* name() const noexcept = 0;
+  //! The same model for other parameters (set-up: allocates, validates), so that a simulation
+  //! can give the plant parameters the controller is not told; null for a model that cannot be
+  //! rebuilt so.
+  virtual std::unique_ptr<VehicleModel> with_parameters(const VehicleParameters& parameters) const {
+    (void)parameters;
+    return nullptr;
+  }
 
   const VehicleParameters& parameters() const noexcept { return parameters_; }
 
@@ -92,6 +100,10 @@ class DynamicSingleTrack final : public VehicleModel {
   VehicleState derivative(const VehicleState& state, double steering_angle_rad,
                           double longitudinal_acceleration_mps2) const noexcept override;
   const char* name() const noexcept override { return "dynamic"; }
+  std::unique_ptr<VehicleModel> with_parameters(
+      const VehicleParameters& parameters) const override {
+    return std::make_unique<DynamicSingleTrack>(parameters);
+  }
 
   //! Lateral Magic Formula force [N] for slip angle alpha [rad] and vertical load Fz [N].
   static double lateral_force(const TireParameters& tire, double slip_angle_rad,

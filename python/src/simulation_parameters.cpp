@@ -1,0 +1,80 @@
+// The closed loop's simulation settings (smoothsteer/sim/simulation.hpp), above all where the
+// plant differs from what the controller is told (plant_imperfections.hpp): a scenario's
+// `simulation` block as Scenario.simulation, and the structs to build or check one.
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "smoothsteer/sim/simulation.hpp"
+
+namespace smoothsteer::python {
+namespace {
+
+template <typename T>
+T from_keywords(const py::kwargs& keywords) {
+  py::object value = py::cast(T{});
+  set_attributes(value, keywords);
+  return value.cast<T>();
+}
+
+}  // namespace
+
+void bind_simulation_parameters(py::module_& m) {
+  using S = PlantScales;
+  py::class_<S>(m, "PlantScales",
+                "Factors on the plant's vehicle only (kinetic plants); keyword arguments.")
+      .def(py::init(&from_keywords<S>))
+      .def_readwrite("mass", &S::mass, "mass factor; the axle cornering stiffnesses stay")
+      .def_readwrite("yaw_inertia", &S::yaw_inertia, "Iz factor")
+      .def_readwrite("cornering_stiffness", &S::cornering_stiffness, "factor on B")
+      .def_readwrite("friction", &S::friction, "factor on mu; the cornering stiffness stays")
+      .def_readwrite("cg_position", &S::cg_position,
+                     "CG shift toward the front axle [fraction of the wheelbase]");
+
+  using A = PlantActuatorScales;
+  py::class_<A>(m, "PlantActuatorScales", "Factors on the simulated actuator only; keywords.")
+      .def(py::init(&from_keywords<A>))
+      .def_readwrite("dead_time", &A::dead_time, "dead-time factor (rounded to the sub-step)")
+      .def_readwrite("bandwidth", &A::bandwidth, "bandwidth factor");
+
+  using F = SideForce;
+  py::class_<F>(m, "SideForce", "A lateral force at the CG and a yaw moment from start_s on.")
+      .def(py::init(&from_keywords<F>))
+      .def_readwrite("force_n", &F::force_n, "[N], + to the car's left")
+      .def_readwrite("yaw_moment_nm", &F::yaw_moment_nm, "[N m], + counter-clockwise")
+      .def_readwrite("start_s", &F::start_s, "[s]");
+
+  using P = SimulationParameters;
+  py::class_<P>(m, "SimulationParameters",
+                "A scenario's simulation block (docs/simulation.md): disturbances, model error "
+                "and imperfect sensors given to the plant only; keyword arguments.")
+      .def(py::init(&from_keywords<P>))
+      .def_readwrite("control_period_s", &P::control_period_s)
+      .def_readwrite("substep_s", &P::substep_s)
+      .def_readwrite("duration_s", &P::duration_s)
+      .def_readwrite("matched_disturbance", &P::matched_disturbance, "[1/m]")
+      .def_readwrite("plant_curvature_disturbance", &P::plant_curvature_disturbance, "[1/m]")
+      .def_readwrite("steering_offset_rad", &P::steering_offset_rad, "rack offset [rad]")
+      .def_readwrite("plant_scales", &P::plant_scales, "PlantScales")
+      .def_readwrite("plant_actuator_scales", &P::plant_actuator_scales, "PlantActuatorScales")
+      .def_readwrite("crossfall", &P::crossfall, "grade tan(phi); + falls to the car's right")
+      .def_readwrite("side_force", &P::side_force, "SideForce")
+      .def_readwrite("pose_latency_s", &P::pose_latency_s, "[s]")
+      .def_readwrite("pose_rate_hz", &P::pose_rate_hz, "[Hz]; None: every control step")
+      .def_readwrite("steering_angle_sensor_offset_rad", &P::steering_angle_sensor_offset_rad,
+                     "[rad]")
+      .def_readwrite("gyro_bias_radps", &P::gyro_bias_radps, "[rad/s]")
+      .def_readwrite("position_noise_std_m", &P::position_noise_std_m)
+      .def_readwrite("heading_noise_std_rad", &P::heading_noise_std_rad)
+      .def_readwrite("noise_seed", &P::noise_seed)
+      .def("validation_error", &P::validation_error,
+           "'' when valid, else the message naming the field, value and rule.")
+      .def("validate", &P::validate, "Raises ValueError naming the field, value and rule.");
+
+  m.def("scaled_plant_vehicle", &scaled_plant_vehicle, py::arg("vehicle"), py::arg("scales"),
+        "The plant's VehicleParameters under PlantScales (ValueError naming the scale when the "
+        "result describes no car).");
+}
+
+}  // namespace smoothsteer::python

@@ -1,0 +1,77 @@
+"""The plant-only imperfections from Python: Scenario.simulation carries every new field of
+SimulationParameters, --set style overrides reach them, the structs validate by field name, and a
+run with them differs from the nominal one while the controller's vehicle stays."""
+
+import pytest
+
+import smoothsteer as ss
+
+LANE_CHANGE = "scenarios/lane_change_15.yaml"
+
+
+def test_overrides_reach_the_simulation_parameters():
+    scenario = ss.load_scenario(
+        LANE_CHANGE,
+        {
+            "simulation.crossfall": 0.02,
+            "simulation.plant_scales.mass": 1.3,
+            "simulation.plant_actuator_scales.dead_time": 1.5,
+            "simulation.side_force": {"force_n": 250.0, "start_s": 3.0},
+            "simulation.pose_latency_s": 0.06,
+            "simulation.pose_rate_hz": 10,
+            "simulation.steering_angle_sensor_offset_rad": 0.01,
+            "simulation.gyro_bias_radps": 0.005,
+        },
+    )
+    sim = scenario.simulation
+    assert sim.crossfall == 0.02
+    assert sim.plant_scales.mass == 1.3
+    assert sim.plant_scales.cornering_stiffness == 1.0
+    assert sim.plant_actuator_scales.dead_time == 1.5
+    assert (sim.side_force.force_n, sim.side_force.yaw_moment_nm, sim.side_force.start_s) == (
+        250.0,
+        0.0,
+        3.0,
+    )
+    assert sim.pose_latency_s == 0.06
+    assert sim.pose_rate_hz == 10.0
+    assert sim.steering_angle_sensor_offset_rad == 0.01
+    assert sim.gyro_bias_radps == 0.005
+    assert scenario.plant_vehicle is None
+    assert ss.load_scenario(LANE_CHANGE).simulation.pose_rate_hz is None
+
+
+def test_structs_validate_naming_the_field():
+    sim = ss.SimulationParameters(crossfall=0.5)
+    assert "SimulationParameters: crossfall = 0.5 must be in [-0.1, 0.1]" in sim.validation_error()
+    with pytest.raises(ValueError, match="plant_scales.mass"):
+        ss.SimulationParameters(plant_scales=ss.PlantScales(mass=4.0)).validate()
+    with pytest.raises(ValueError, match="pose_latency_s"):
+        ss.SimulationParameters(pose_latency_s=0.7).validate()
+    assert ss.SimulationParameters(pose_rate_hz=25.0).validation_error() == ""
+    with pytest.raises(TypeError, match="mas"):
+        ss.PlantScales(mas=1.2)
+
+
+def test_scaled_plant_vehicle_keeps_the_cornering_stiffness_and_scales_the_understeer():
+    car = ss.VehicleParameters(front_tire=ss.TireParameters(stiffness_factor_b=11.0))
+    truth = ss.scaled_plant_vehicle(car, ss.PlantScales(mass=1.3))
+    assert truth.mass_kg == pytest.approx(1.3 * car.mass_kg)
+    assert truth.front_tire.stiffness_factor_b == pytest.approx(11.0 / 1.3)
+    with pytest.raises(ValueError, match="cg_position"):
+        ss.scaled_plant_vehicle(
+            ss.VehicleParameters(cg_to_front_axle_m=0.4, cg_to_rear_axle_m=2.0),
+            ss.PlantScales(cg_position=0.25),
+        )
+
+
+def test_a_late_pose_costs_precision_and_the_controller_is_told_nothing():
+    _, nominal = ss.run_scenario(LANE_CHANGE)
+    late = ss.load_scenario(LANE_CHANGE, {"simulation.pose_latency_s": 0.06})
+    _, summary = ss.run_scenario(late)
+    assert summary["parameters"]["vehicle"] == nominal["parameters"]["vehicle"]
+    assert summary["parameters"]["actuator"] == nominal["parameters"]["actuator"]
+    assert (
+        summary["metrics"]["max_abs_rear_error_m"]
+        > 2.0 * nominal["metrics"]["max_abs_rear_error_m"]
+    )
