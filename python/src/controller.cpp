@@ -354,7 +354,15 @@ void bind_controller(py::module_& m) {
            "[m/s^2], period [s], the rear axle's side slip beta_r [rad] and how old the pose is "
            "[s] (0 <= pose_age_s <= 0.5). Returns a ControllerOutput; raises ControllerError on "
            "an error status (e.g. a NaN input).")
-      .def("reset", &SteeringController::reset, py::arg("measured_steering_angle_rad") = 0.0)
+      .def(
+          "reset",
+          [](SteeringController& controller, double angle) {
+            const Status status = controller.reset(angle);
+            if (status != Status::ok) throw ControllerError(status);
+          },
+          py::arg("measured_steering_angle_rad") = 0.0,
+          "Restarts at the measured steering angle [rad]; raises ControllerError for NaN, inf, "
+          "|angle| >= pi/2 or beyond the car's angle limit (never wrapped).")
       .def_property_readonly("name", &SteeringController::name)
       .def(
           "set_path",

@@ -27,7 +27,7 @@ py::dict loop(SteeringController& controller, const py::tuple& start, double spe
   KinematicLoopResult result;
   {
     py::gil_scoped_release unlocked;
-    controller.reset(0.0);
+    (void)controller.reset(0.0);  // 0 is always accepted
     result = run_kinematic_closed_loop(controller, pose, options);
   }
   if (result.status != Status::ok) throw ControllerError(result.status);

@@ -101,6 +101,18 @@ void bind_vehicle(py::module_& m) {
       .def_readwrite("max_rate_radps", &A::max_rate_radps)
       .def_property_readonly("pole_radps", &A::pole_radps, "w_p [rad/s]");
 
+  using G = SideSlipFaultGate;
+  py::class_<G>(m, "SideSlipFaultGate",
+                "What rejects a bad gyro or accelerometer sample; keyword arguments.")
+      .def(py::init(&from_keywords<G>))
+      .def_readwrite("innovation_gate", &G::innovation_gate, "chi-square of nu^2 / S")
+      .def_readwrite("friction_margin", &G::friction_margin, "a_max = (1 + margin) mu g")
+      .def_readwrite("noise_margin", &G::noise_margin, "noise stds added to every bound")
+      .def_readwrite("max_side_slip_rad", &G::max_side_slip_rad, "saturated beyond [rad]")
+      .def_readwrite("saturated_restart_s", &G::saturated_restart_s)
+      .def_readwrite("uncorrected_untrusted_s", &G::uncorrected_untrusted_s)
+      .def_readwrite("uncorrected_restart_s", &G::uncorrected_restart_s);
+
   using O = SideSlipObserverParameters;
   py::class_<O>(m, "SideSlipObserverParameters",
                 "The side-slip observer's model and sensor noise; keyword arguments.")
@@ -120,6 +132,7 @@ void bind_vehicle(py::module_& m) {
       .def_readwrite("rear_tire", &O::rear_tire)
       .def_readwrite("gravity_mps2", &O::gravity_mps2)
       .def_readwrite("min_speed_mps", &O::min_speed_mps)
+      .def_readwrite("fault_gate", &O::fault_gate, "SideSlipFaultGate")
       .def_static("from_vehicle", &O::from_vehicle, py::arg("vehicle"),
                   py::arg("cornering_stiffness_scale") = 1.0, py::arg("mass_scale") = 1.0,
                   py::arg("tire_model") = ObserverTireModel::linear)
@@ -127,13 +140,42 @@ void bind_vehicle(py::module_& m) {
 }
 
 void bind_outputs(py::module_& m) {
+  using H = SideSlipObserverHealth;
+  py::class_<H>(m, "SideSlipObserverHealth", "What the observer's gates dropped and rejected.")
+      .def_readonly("yaw_rate_dropped", &H::yaw_rate_dropped, "non-finite gyro samples")
+      .def_readonly("yaw_rate_rejected", &H::yaw_rate_rejected, "implausible or gated")
+      .def_readonly("lateral_acceleration_dropped", &H::lateral_acceleration_dropped)
+      .def_readonly("lateral_acceleration_rejected", &H::lateral_acceleration_rejected)
+      .def_readonly("restarts", &H::restarts, "re-initialisations from the kinematic model")
+      .def_readonly("last_period", &H::last_period, "SensorFault bits of the last update")
+      .def_readonly("trusted", &H::trusted)
+      .def_readonly("saturated_s", &H::saturated_s)
+      .def_readonly("uncorrected_s", &H::uncorrected_s);
+  py::module_ faults = m.def_submodule("SensorFault", "The bits of last_period.");
+  const std::pair<const char*, SensorFault> fault_bits[] = {
+      {"none", fault_none},
+      {"yaw_rate_dropped", fault_yaw_rate_dropped},
+      {"yaw_rate_implausible", fault_yaw_rate_implausible},
+      {"yaw_rate_innovation", fault_yaw_rate_innovation},
+      {"lateral_acceleration_dropped", fault_lateral_acceleration_dropped},
+      {"lateral_acceleration_implausible", fault_lateral_acceleration_implausible},
+      {"lateral_acceleration_innovation", fault_lateral_acceleration_innovation},
+      {"estimate_saturated", fault_estimate_saturated},
+      {"uncorrected", fault_uncorrected},
+      {"restarted", fault_restarted},
+  };
+  for (const auto& [name, bit] : fault_bits) faults.attr(name) = static_cast<int>(bit);
+
   using D = SideSlipDiagnostics;
   py::class_<D>(m, "SideSlipDiagnostics", "The rear axle's side slip as the system sees it.")
       .def_readonly("rear_axle_side_slip_rad", &D::rear_axle_side_slip_rad, "beta_r to the law")
       .def_readonly("side_slip_rad", &D::side_slip_rad, "observer's beta at the CG")
       .def_readonly("lateral_velocity_mps", &D::lateral_velocity_mps, "observer's vy")
       .def_readonly("yaw_rate_radps", &D::yaw_rate_radps, "observer's filtered r")
-      .def_readonly("observer_status", &D::observer_status);
+      .def_readonly("observer_status", &D::observer_status)
+      .def_readonly("estimate_trusted", &D::estimate_trusted,
+                    "False: saturated or uncorrected; the law got beta_r = 0")
+      .def_readonly("sensors", &D::sensors, "SideSlipObserverHealth");
 
   using O = SteeringSystemOutput;
   py::class_<O>(m, "SteeringSystemOutput", "The command, its derivatives and diagnostics.")
@@ -229,7 +271,15 @@ void bind_system(py::module_& m) {
            "command), a slip sensor's beta_r [rad] and how old the pose is [s] (localization "
            "latency, 0 <= pose_age_s <= 0.5; the controller carries the pose forward over it). "
            "Returns a SteeringSystemOutput; raises ControllerError on an error status.")
-      .def("reset", &SteeringSystem::reset, py::arg("measured_steering_angle_rad") = 0.0)
+      .def(
+          "reset",
+          [](SteeringSystem& system, double angle) {
+            const Status status = system.reset(angle);
+            if (status != Status::ok) throw ControllerError(status);
+          },
+          py::arg("measured_steering_angle_rad") = 0.0,
+          "Restarts at the measured steering angle [rad]; raises ControllerError for NaN, inf, "
+          "|angle| >= pi/2 or beyond the car's angle limit (never wrapped).")
       .def(
           "set_path",
           [](SteeringSystem& system, std::shared_ptr<Path> path) {

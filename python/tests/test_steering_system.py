@@ -125,6 +125,7 @@ BOUND_STRUCTS = [
     ("system/steering_system.hpp", "SteeringSystemParameters", "SteeringSystemParameters", []),
     ("vehicle/side_slip_observer.hpp", "SideSlipObserverParameters",
      "SideSlipObserverParameters", []),
+    ("vehicle/sensor_fault_gate.hpp", "SideSlipFaultGate", "SideSlipFaultGate", []),
     # The double-track group is read from vehicle files only (docs/python.md).
     ("vehicle/vehicle_parameters.hpp", "VehicleParameters", "VehicleParameters", ["double_track"]),
     ("vehicle/vehicle_parameters.hpp", "TireParameters", "TireParameters", []),

@@ -36,11 +36,15 @@ std::optional<Violation> HosmParameters::first_violation() const noexcept {
 HosmController::HosmController(const HosmParameters& parameters, std::shared_ptr<const Path> path)
     : PathTrackingBaseline(parameters, std::move(path), "HosmController") {
   alpha_ = parameters_.alpha();
-  reset(0.0);
+  (void)reset(0.0);
 }
 
-void HosmController::reset(double measured_steering_angle_rad) noexcept {
+Status HosmController::reset(double measured_steering_angle_rad) noexcept {
+  if (!valid_reset_angle(measured_steering_angle_rad, parameters_.steering_angle_bound_rad)) {
+    return Status::invalid_input;
+  }
   restart(measured_steering_angle_rad, parameters_.steering_angle_bound_rad);
+  return Status::ok;
 }
 
 double HosmController::steering_rate_per_meter(double lateral_error_m, double heading_error_rad,

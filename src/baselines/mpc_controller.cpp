@@ -62,7 +62,7 @@ struct MpcWorkspace {
 MpcController::MpcController(const MpcParameters& parameters, std::shared_ptr<const Path> path)
     : PathTrackingBaseline(parameters, std::move(path), "MpcController") {
   workspace_ = std::make_unique<detail::MpcWorkspace>(parameters_);
-  reset(0.0);
+  (void)reset(0.0);
 }
 
 MpcController::~MpcController() = default;
@@ -71,12 +71,16 @@ std::span<const double> MpcController::planned_steering() const noexcept {
   return {workspace_->plan.data(), static_cast<std::size_t>(workspace_->plan.size())};
 }
 
-void MpcController::reset(double measured_steering_angle_rad) noexcept {
+Status MpcController::reset(double measured_steering_angle_rad) noexcept {
+  if (!valid_reset_angle(measured_steering_angle_rad, parameters_.limits.angle_rad)) {
+    return Status::invalid_input;
+  }
   // Clamped, so that the constrained QP (|u_0 - u_prev| <= rate T_c) stays feasible.
   restart(measured_steering_angle_rad, parameters_.limits.angle_rad);
   steering_estimate_ = command_before_ = steering_;
   workspace_->plan.setConstant(steering_);
   first_update_ = true;
+  return Status::ok;
 }
 
 Status MpcController::compute_command(const ControllerInput& input,
@@ -112,7 +116,7 @@ Status MpcController::compute_command(const ControllerInput& input,
       }
     }
     if (!solved) {
-      reset(steering_);
+      (void)reset(steering_);
       return Status::numerical_error;
     }
     // Saturation of the applied command (Autoware clamps to steer_lim and the rate limit).

@@ -51,12 +51,16 @@ ArcPrediction predict_arc(double steering_angle_rad, double wheelbase_m,
 NewtonRaphsonController::NewtonRaphsonController(const NewtonRaphsonParameters& parameters,
                                                  std::shared_ptr<const Path> path)
     : PathTrackingBaseline(parameters, std::move(path), "NewtonRaphsonController") {
-  reset(0.0);
+  (void)reset(0.0);
 }
 
-void NewtonRaphsonController::reset(double measured_steering_angle_rad) noexcept {
+Status NewtonRaphsonController::reset(double measured_steering_angle_rad) noexcept {
+  if (!valid_reset_angle(measured_steering_angle_rad, parameters_.limits.angle_rad)) {
+    return Status::invalid_input;
+  }
   restart(measured_steering_angle_rad, parameters_.limits.angle_rad);
   rate_ = 0.0;
+  return Status::ok;
 }
 
 Status NewtonRaphsonController::compute_command(const ControllerInput& input,

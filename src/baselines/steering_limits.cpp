@@ -30,9 +30,11 @@ SaturatedController::SaturatedController(std::unique_ptr<SteeringController> inn
   if (!inner_) throw std::invalid_argument("SaturatedController: inner controller is null");
 }
 
-void SaturatedController::reset(double measured_steering_angle_rad) noexcept {
-  inner_->reset(measured_steering_angle_rad);
+Status SaturatedController::reset(double measured_steering_angle_rad) noexcept {
+  const Status status = inner_->reset(measured_steering_angle_rad);
+  if (status != Status::ok) return status;
   saturator_.reset(measured_steering_angle_rad);
+  return Status::ok;
 }
 
 Status SaturatedController::compute_command(const ControllerInput& input,

@@ -17,6 +17,10 @@
 namespace smoothsteer {
 namespace {
 
+//! A reset angle this close to the chain's is inside the set (the chain's round trip through
+//! atan and tan moves it by rounding only) [rad].
+constexpr double kApproachTolerance = 1e-9;
+
 bool finite(double value) noexcept {
   return std::isfinite(value);
 }
@@ -36,7 +40,7 @@ LeadWheelController::LeadWheelController(const ControllerParameters& parameters,
   parameters.validate();
   if (!path_) throw std::invalid_argument("LeadWheelController: path is null; a path is required");
   apply_parameters(parameters);
-  reset(0.0);
+  (void)reset(0.0);
 }
 
 void LeadWheelController::apply_parameters(const ControllerParameters& parameters) noexcept {
@@ -137,7 +141,11 @@ Status LeadWheelController::retune(const ControllerParameters& parameters) noexc
   return Status::ok;
 }
 
-void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
+Status LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
+  if (!valid_reset_angle(measured_steering_angle_rad,
+                         parameters_.governor.max_steering_angle_rad)) {
+    return Status::invalid_input;
+  }
   direction_ = 1.0;
   previous_speed_ = -1.0;
   disturbance_.reset();
@@ -145,7 +153,43 @@ void LeadWheelController::reset(double measured_steering_angle_rad) noexcept {
   rear_hint_.reset();
   front_hint_.reset();
   lead_hint_.reset();
-  initialise_chain(finite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0);
+  initialise_chain(measured_steering_angle_rad);
+  // Beyond the invariant set the chain starts at its bound; the command leaves the wheel's angle
+  // towards it within the rate limit instead of jumping there (approach_step()).
+  approach_angle_ = measured_steering_angle_rad;
+  approaching_ = std::abs(measured_steering_angle_rad - last_steering_angle_) > kApproachTolerance;
+  return Status::ok;
+}
+
+double LeadWheelController::approach_rate_radps(double speed) const noexcept {
+  // The car's rate limit where the parameters know it, else the rate the chain is certified
+  // to, else its box bound: the approach is never faster than the chain may steer.
+  const SteeringGovernor& governor = parameters_.governor;
+  if (std::isfinite(governor.max_steering_rate_radps)) {
+    return governor.max_steering_rate_radps * (1.0 - governor.margin);
+  }
+  const double certified = certificate_.rate_radps(speed);
+  if (std::isfinite(certified)) return certified;
+  return speed * bounds_.steering_rate_per_meter;
+}
+
+void LeadWheelController::approach_step(double speed, double period_s, double& steering,
+                                        double& rate, double& acceleration) noexcept {
+  if (!approaching_) return;
+  const double step = approach_rate_radps(speed) * period_s;
+  if (!std::isfinite(step)) {  // no rate bound at all (order 0): nothing to respect
+    approaching_ = false;
+    return;
+  }
+  const double next = std::clamp(steering, approach_angle_ - step, approach_angle_ + step);
+  if (next == steering) {
+    approaching_ = false;  // met the chain: its command from here on
+  } else {
+    rate = (next - approach_angle_) / period_s;
+    acceleration = 0.0;
+    steering = next;
+  }
+  approach_angle_ = next;
 }
 
 double LeadWheelController::friction_guard_curvature(double speed) const noexcept {
@@ -474,6 +518,9 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
   rate = command.rate_radps;
   acceleration = command.acceleration_radps2;
   derivatives = command.derivatives;
+  // After a reset beyond the invariant set, the command as sent approaches the chain's within
+  // the rate limit (the history keeps the chain's, the state the approach converges to).
+  approach_step(speed_magnitude, input.period_s, steering, rate, acceleration);
   output.steering_angle_rad = steering;
   output.steering_rate_radps = rate;
   output.steering_acceleration_radps2 = acceleration;

@@ -55,7 +55,7 @@ LoopOutcome run_case(SteeringController& controller, const ReachingBenchmarkOpti
   loop.speed_mps = options.speed_mps;
   loop.period_s = options.period_s;
   loop.duration_s = options.horizon_m / options.speed_mps;
-  controller.reset(0.0);
+  (void)controller.reset(0.0);  // 0 is always accepted
   const KinematicLoopResult result = run_kinematic_closed_loop(
       controller, {{0.0, options.initial_lateral_error_m}, heading}, loop);
   return {reaching_distance(result, options.lateral_tolerance_m, options.heading_tolerance_rad),

@@ -16,8 +16,8 @@ class TimedController final : public SteeringController {
  public:
   explicit TimedController(std::unique_ptr<SteeringController> inner) : inner_(std::move(inner)) {}
 
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override {
-    inner_->reset(measured_steering_angle_rad);
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override {
+    return inner_->reset(measured_steering_angle_rad);
   }
   const char* name() const noexcept override { return inner_->name(); }
   Status set_path(std::shared_ptr<const Path> path) noexcept override {

@@ -118,7 +118,7 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
   std::vector<double> input_buffer(static_cast<std::size_t>(substeps));
   VehicleState state = state_from_rear_axle(start, speed.speed(0.0), car);
   vehicle.constrain(state, 0.0);
-  system.reset(0.0);
+  (void)system.reset(0.0);  // 0 is always accepted
   // The active piece of a plan (docs/cusps.md); a plain path is one forward piece.
   std::size_t piece = 0;
   const Path* active = &path;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -91,15 +92,31 @@ void SteeringSystem::set_up(const SteeringSystemParameters& parameters) {
   parameters.validate();
   parameters_ = parameters;
   lead_wheel_ = find_lead_wheel(*controller_);
-  if (parameters_.slip_input == SlipInput::observer) observer_.emplace(parameters_.observer);
+  if (parameters_.slip_input == SlipInput::observer) {
+    observer_.emplace(parameters_.observer);
+    pending_observer_.emplace(parameters_.observer);
+  }
 }
 
-void SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
-  controller_->reset(measured_steering_angle_rad);
+Status SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
+  const Status status = controller_->reset(measured_steering_angle_rad);
+  if (status != Status::ok) return status;
   if (observer_) observer_->reset();
   controller_output_ = {};
-  last_command_rad_ =
-      std::isfinite(measured_steering_angle_rad) ? measured_steering_angle_rad : 0.0;
+  last_command_rad_ = measured_steering_angle_rad;
+  return Status::ok;
+}
+
+bool SteeringSystem::valid_input(const SteeringSystemInput& input) const noexcept {
+  if (!input_in_range(controller_input_)) return false;
+  // The wheel's angle is measured or absent (std::nullopt), never NaN or beyond a half turn.
+  if (input.steering_angle_rad && !(std::abs(*input.steering_angle_rad) <= pi)) return false;
+  if (parameters_.slip_input == SlipInput::sensor) {
+    // As measured: beyond ControllerInput::max_side_slip_rad the controller would reject it.
+    return std::abs(input.rear_axle_side_slip_rad.value_or(0.0)) <=
+           ControllerInput::max_side_slip_rad;
+  }
+  return true;
 }
 
 double SteeringSystem::rear_axle_side_slip(const SteeringSystemInput& input,
@@ -108,23 +125,29 @@ double SteeringSystem::rear_axle_side_slip(const SteeringSystemInput& input,
     case SlipInput::kinematic:
       return 0.0;
     case SlipInput::sensor:
-      // As measured: beyond ControllerInput::max_side_slip_rad the controller rejects it.
       return input.rear_axle_side_slip_rad.value_or(0.0);
     case SlipInput::observer:
       break;
   }
+  // The observer steps on a copy, committed only when the controller accepts the period: an
+  // update() that fails changes no state.
+  SideSlipObserver& next = *pending_observer_;
+  next = *observer_;
   SideSlipMeasurement measurement;
   measurement.speed_mps = input.speed_mps;
   measurement.yaw_rate_radps = input.yaw_rate_radps;
   measurement.lateral_acceleration_mps2 = input.lateral_acceleration_mps2;
   measurement.steering_angle_rad = input.steering_angle_rad.value_or(last_command_rad_);
-  slip.observer_status = observer_->update(measurement, input.period_s);
-  slip.side_slip_rad = observer_->side_slip_rad();
-  slip.lateral_velocity_mps = observer_->lateral_velocity_mps();
-  slip.yaw_rate_radps = observer_->yaw_rate_radps();
-  if (slip.observer_status != Status::ok) return 0.0;
+  slip.observer_status = next.update(measurement, input.period_s);
+  slip.side_slip_rad = next.side_slip_rad();
+  slip.lateral_velocity_mps = next.lateral_velocity_mps();
+  slip.yaw_rate_radps = next.yaw_rate_radps();
+  slip.sensors = next.health();
+  slip.estimate_trusted = slip.observer_status == Status::ok && slip.sensors.trusted;
+  // Not trusted (saturated, or the model's prediction alone): the kinematic assumption.
+  if (!slip.estimate_trusted) return 0.0;
   // The estimate is clamped to what the controller accepts (docs/vehicle_dynamics.md).
-  return std::clamp(observer_->rear_axle_side_slip_rad(), -ControllerInput::max_side_slip_rad,
+  return std::clamp(next.rear_axle_side_slip_rad(), -ControllerInput::max_side_slip_rad,
                     ControllerInput::max_side_slip_rad);
 }
 
@@ -134,10 +157,13 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   controller_input_ = {input.rear_axle_position, input.heading_rad, input.speed_mps,
                        input.acceleration_mps2, input.period_s};
   controller_input_.pose_age_s = input.pose_age_s;
+  // Every input is checked before any stage takes it: an error changes no state.
+  if (!valid_input(input)) return Status::invalid_input;
   controller_input_.rear_axle_side_slip_rad = rear_axle_side_slip(input, slip);
   slip.rear_axle_side_slip_rad = controller_input_.rear_axle_side_slip_rad;
   const Status status = controller_->update(controller_input_, controller_output_);
   if (status != Status::ok) return status;
+  if (observer_) std::swap(*observer_, *pending_observer_);
   const ControllerOutput& command = controller_output_;
   last_command_rad_ = command.steering_angle_rad;
   output.steering_angle_rad = command.steering_angle_rad;

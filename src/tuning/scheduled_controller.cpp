@@ -51,9 +51,13 @@ Status ScheduledController::compute_command(const ControllerInput& input,
   return controller_.update(input, output);
 }
 
-void ScheduledController::reset(double measured_steering_angle_rad) noexcept {
-  controller_.reset(measured_steering_angle_rad);
-  tuned_speed_ = -1.0;
+Status ScheduledController::reset(double measured_steering_angle_rad) noexcept {
+  if (!valid_reset_angle(measured_steering_angle_rad, schedule_.vehicle().max_steering_angle_rad)) {
+    return Status::invalid_input;
+  }
+  const Status status = controller_.reset(measured_steering_angle_rad);
+  if (status == Status::ok) tuned_speed_ = -1.0;
+  return status;
 }
 
 }  // namespace smoothsteer

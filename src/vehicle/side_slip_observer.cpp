@@ -8,7 +8,6 @@
 namespace smoothsteer {
 namespace {
 
-constexpr const char* owner = "SideSlipObserverParameters";
 //! Initial standard deviations of vy [m/s] and r [rad/s].
 constexpr double kInitialLateralVelocityStd = 0.5;
 constexpr double kInitialYawRateStd = 0.1;
@@ -38,11 +37,14 @@ void matrix_exponential(const Matrix2& a, double t, Matrix2& out) noexcept {
   out[1][1] = scale * (c + s * (a[1][1] - mu));
 }
 
-//! Scalar Kalman correction of (x, P) with y = h x + noise of variance r.
-void correct(double x[2], Matrix2& p, const double h[2], double innovation, double r) noexcept {
+//! Scalar Kalman correction of (x, P) with y = h x + noise of variance r, unless the normalised
+//! innovation nu^2 / S exceeds `gate` (then nothing changes and it returns false).
+bool correct(double x[2], Matrix2& p, const double h[2], double innovation, double r,
+             double gate) noexcept {
   const double ph0 = p[0][0] * h[0] + p[0][1] * h[1];
   const double ph1 = p[1][0] * h[0] + p[1][1] * h[1];
   const double s = h[0] * ph0 + h[1] * ph1 + r;
+  if (!(innovation * innovation <= gate * s)) return false;
   const double k0 = ph0 / s, k1 = ph1 / s;
   x[0] += k0 * innovation;
   x[1] += k1 * innovation;
@@ -51,6 +53,7 @@ void correct(double x[2], Matrix2& p, const double h[2], double innovation, doub
   p[0][0] = p00;
   p[0][1] = p[1][0] = p01;
   p[1][1] = p11;
+  return true;
 }
 
 //! The single-track model's lateral dynamics at x = (vy, r): d x / dt, its Jacobian A, and the
@@ -136,73 +139,18 @@ constexpr int kMaxPredictionSubsteps = 16;
 
 }  // namespace
 
-SideSlipObserverParameters SideSlipObserverParameters::from_vehicle(
-    const VehicleParameters& vehicle, double cornering_stiffness_scale, double mass_scale,
-    ObserverTireModel tire_model) {
-  SideSlipObserverParameters p;
-  p.mass_kg = vehicle.mass_kg * mass_scale;
-  p.yaw_inertia_kgm2 = vehicle.yaw_inertia_kgm2 * mass_scale;
-  p.cg_to_front_axle_m = vehicle.cg_to_front_axle_m;
-  p.cg_to_rear_axle_m = vehicle.cg_to_rear_axle_m;
-  p.front_cornering_stiffness_npr =
-      cornering_stiffness_scale * vehicle.front_cornering_stiffness_npr();
-  p.rear_cornering_stiffness_npr =
-      cornering_stiffness_scale * vehicle.rear_cornering_stiffness_npr();
-  p.tire_model = tire_model;
-  p.front_tire = vehicle.front_tire;
-  p.rear_tire = vehicle.rear_tire;
-  p.gravity_mps2 = vehicle.gravity_mps2;
-  return p;
-}
-
-std::optional<Violation> SideSlipObserverParameters::first_violation() const noexcept {
-  RuleChecker check(owner);
-  const struct {
-    const char* field;
-    double value;
-  } strictly_positive[] = {
-      {"mass_kg", mass_kg},
-      {"yaw_inertia_kgm2", yaw_inertia_kgm2},
-      {"cg_to_front_axle_m", cg_to_front_axle_m},
-      {"cg_to_rear_axle_m", cg_to_rear_axle_m},
-      {"front_cornering_stiffness_npr", front_cornering_stiffness_npr},
-      {"rear_cornering_stiffness_npr", rear_cornering_stiffness_npr},
-      {"yaw_rate_noise_std_radps", yaw_rate_noise_std_radps},
-      {"lateral_acceleration_noise_std_mps2", lateral_acceleration_noise_std_mps2},
-      {"lateral_process_std_mps2", lateral_process_std_mps2},
-      {"yaw_process_std_radps2", yaw_process_std_radps2},
-  };
-  for (const auto& entry : strictly_positive) {
-    check.require(positive_finite(entry.value) && entry.value <= 1e12, entry.field, entry.value,
-                  "must be finite, > 0 and <= 1e12");
-  }
-  check.require(std::isfinite(min_speed_mps) && min_speed_mps >= 0.5 && min_speed_mps <= 50.0,
-                "min_speed_mps", min_speed_mps, "must be in [0.5, 50] m/s");
-  check.require(positive_finite(gravity_mps2) && gravity_mps2 <= 100.0, "gravity_mps2",
-                gravity_mps2, "must be finite, > 0 and <= 100");
-  check.require(
-      tire_model == ObserverTireModel::linear || tire_model == ObserverTireModel::magic_formula,
-      "tire_model", static_cast<double>(tire_model), "must be 0 (linear) or 1 (magic_formula)");
-  check.include(tire_violation(owner, "front_tire.", front_tire));
-  check.include(tire_violation(owner, "rear_tire.", rear_tire));
-  return check.first();
-}
-
-std::string SideSlipObserverParameters::validation_error() const {
-  return describe(first_violation());
-}
-
-void SideSlipObserverParameters::validate() const {
-  throw_if_violated(first_violation());
-}
-
 SideSlipObserver::SideSlipObserver(const SideSlipObserverParameters& parameters)
-    : parameters_(parameters) {
-  parameters_.validate();
+    : parameters_(parameters), plausibility_((parameters.validate(), parameters)) {
   reset();
 }
 
 void SideSlipObserver::reset() noexcept {
+  reset_estimate();
+  plausibility_.reset();
+  health_ = {};
+}
+
+void SideSlipObserver::reset_estimate() noexcept {
   lateral_velocity_ = yaw_rate_ = side_slip_ = rear_side_slip_ = speed_ = 0.0;
   previous_steering_ = 0.0;
   has_previous_ = false;
@@ -211,24 +159,65 @@ void SideSlipObserver::reset() noexcept {
   covariance_[0][1] = covariance_[1][0] = 0.0;
 }
 
+void SideSlipObserver::restart_from_model(double v, double yaw_rate) noexcept {
+  const double held = previous_steering_;
+  const bool has_previous = has_previous_;
+  reset_estimate();
+  previous_steering_ = held;
+  has_previous_ = has_previous;
+  speed_ = v;
+  yaw_rate_ = yaw_rate;
+  lateral_velocity_ = parameters_.cg_to_rear_axle_m * yaw_rate;
+  side_slip_ = v > 0.0 ? std::atan(lateral_velocity_ / v) : 0.0;
+}
+
+void SideSlipObserver::judge_estimate(bool corrected, double v, double restart_yaw_rate,
+                                      double period_s, std::uint32_t& faults) noexcept {
+  const SideSlipFaultGate& gate = parameters_.fault_gate;
+  // A duration is reached within a rounding of the periods that sum to it.
+  auto reached = [](double elapsed, double limit) { return elapsed >= limit * (1.0 - 1e-9); };
+  health_.saturated_s =
+      std::abs(rear_side_slip_) > gate.max_side_slip_rad ? health_.saturated_s + period_s : 0.0;
+  health_.uncorrected_s = corrected ? 0.0 : health_.uncorrected_s + period_s;
+  if (health_.saturated_s > 0.0) faults |= fault_estimate_saturated;
+  if (reached(health_.uncorrected_s, gate.uncorrected_untrusted_s)) faults |= fault_uncorrected;
+  if ((health_.saturated_s > 0.0 && reached(health_.saturated_s, gate.saturated_restart_s)) ||
+      reached(health_.uncorrected_s, gate.uncorrected_restart_s)) {
+    restart_from_model(v, restart_yaw_rate);
+    health_.saturated_s = health_.uncorrected_s = 0.0;
+    ++health_.restarts;
+    faults |= fault_restarted;
+  }
+  health_.trusted =
+      health_.saturated_s == 0.0 && !reached(health_.uncorrected_s, gate.uncorrected_untrusted_s);
+}
+
 Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) noexcept {
-  if (!std::isfinite(m.speed_mps) || !std::isfinite(m.yaw_rate_radps) ||
-      !std::isfinite(m.lateral_acceleration_mps2) || !std::isfinite(m.steering_angle_rad) ||
+  if (!std::isfinite(m.speed_mps) || !std::isfinite(m.steering_angle_rad) ||
       !positive_finite(period_s) || period_s > 1.0) {
     return Status::invalid_input;
   }
   const SideSlipObserverParameters& p = parameters_;
   const double v = m.speed_mps;
+  if (has_previous_ && speed_ >= p.min_speed_mps) plausibility_.anchor_yaw_rate(yaw_rate_);
+  const SensorPlausibility::Verdict verdict = plausibility_.check(m, period_s);
+  std::uint32_t faults = verdict.faults;
+  if (faults & fault_yaw_rate_dropped) ++health_.yaw_rate_dropped;
+  if (faults & fault_yaw_rate_implausible) ++health_.yaw_rate_rejected;
+  if (faults & fault_lateral_acceleration_dropped) ++health_.lateral_acceleration_dropped;
+  if (faults & fault_lateral_acceleration_implausible) ++health_.lateral_acceleration_rejected;
+  // Without a usable gyro sample the kinematic model's yaw rate stands in.
+  const double kinematic_yaw_rate =
+      v * std::tan(m.steering_angle_rad) / (p.cg_to_front_axle_m + p.cg_to_rear_axle_m);
   speed_ = v;
   if (v < p.min_speed_mps) {
     // Kinematic rolling: the rear axle does not slip.
-    reset();
-    speed_ = v;
+    restart_from_model(v, verdict.use_yaw_rate ? m.yaw_rate_radps : kinematic_yaw_rate);
     previous_steering_ = m.steering_angle_rad;
     has_previous_ = true;
-    yaw_rate_ = m.yaw_rate_radps;
-    lateral_velocity_ = p.cg_to_rear_axle_m * yaw_rate_;
-    side_slip_ = v > 0.0 ? std::atan(lateral_velocity_ / v) : 0.0;
+    health_.saturated_s = health_.uncorrected_s = 0.0;
+    health_.trusted = true;
+    health_.last_period = faults;
     return Status::ok;
   }
   const double lf = p.cg_to_front_axle_m, lr = p.cg_to_rear_axle_m;
@@ -299,17 +288,38 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
   predicted[0][0] += p.lateral_process_std_mps2 * p.lateral_process_std_mps2 * period_s;
   predicted[1][1] += p.yaw_process_std_radps2 * p.yaw_process_std_radps2 * period_s;
 
-  // Corrections: the gyro (r), then the accelerometer (a_y, linearised at the prediction).
-  const double h_yaw[2] = {0.0, 1.0};
-  correct(x, predicted, h_yaw, m.yaw_rate_radps - x[1],
-          p.yaw_rate_noise_std_radps * p.yaw_rate_noise_std_radps);
-  const LateralModel at_prediction = lateral_model(p, axles, v, m.steering_angle_rad, x);
-  const double h_lateral[2] = {at_prediction.jacobian[0][0], at_prediction.jacobian[0][1] + v};
-  correct(x, predicted, h_lateral, m.lateral_acceleration_mps2 - at_prediction.lateral_acceleration,
-          p.lateral_acceleration_noise_std_mps2 * p.lateral_acceleration_noise_std_mps2);
+  // Corrections: the gyro (r), then the accelerometer (a_y, linearised at the prediction), each
+  // only with a plausible sample whose innovation passes the gate.
+  const double gate = p.fault_gate.innovation_gate;
+  bool corrected = false;
+  bool yaw_rate_accepted = false;
+  if (verdict.use_yaw_rate) {
+    const double h_yaw[2] = {0.0, 1.0};
+    yaw_rate_accepted = correct(x, predicted, h_yaw, m.yaw_rate_radps - x[1],
+                                p.yaw_rate_noise_std_radps * p.yaw_rate_noise_std_radps, gate);
+    if (!yaw_rate_accepted) {
+      faults |= fault_yaw_rate_innovation;
+      ++health_.yaw_rate_rejected;
+    }
+    corrected = yaw_rate_accepted;
+  }
+  if (verdict.use_lateral_acceleration) {
+    const LateralModel at_prediction = lateral_model(p, axles, v, m.steering_angle_rad, x);
+    const double h_lateral[2] = {at_prediction.jacobian[0][0], at_prediction.jacobian[0][1] + v};
+    if (correct(x, predicted, h_lateral,
+                m.lateral_acceleration_mps2 - at_prediction.lateral_acceleration,
+                p.lateral_acceleration_noise_std_mps2 * p.lateral_acceleration_noise_std_mps2,
+                gate)) {
+      corrected = true;
+    } else {
+      faults |= fault_lateral_acceleration_innovation;
+      ++health_.lateral_acceleration_rejected;
+    }
+  }
 
   if (!std::isfinite(x[0]) || !std::isfinite(x[1])) {
-    reset();
+    reset_estimate();
+    health_.last_period = faults;
     return Status::numerical_error;
   }
   lateral_velocity_ = x[0];
@@ -319,6 +329,9 @@ Status SideSlipObserver::update(const SideSlipMeasurement& m, double period_s) n
   }
   side_slip_ = std::atan(lateral_velocity_ / v);
   rear_side_slip_ = std::atan((lateral_velocity_ - lr * yaw_rate_) / v);
+  judge_estimate(corrected, v, yaw_rate_accepted ? m.yaw_rate_radps : kinematic_yaw_rate, period_s,
+                 faults);
+  health_.last_period = faults;
   return Status::ok;
 }
 

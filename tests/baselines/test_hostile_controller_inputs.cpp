@@ -155,7 +155,10 @@ class NanDiagnostic final : public SteeringController {
     output.diagnostics.lateral_error_m = nan;
     return Status::ok;
   }
-  void reset(double angle) noexcept override { reset_to = angle; }
+  Status reset(double angle) noexcept override {
+    reset_to = angle;
+    return Status::ok;
+  }
   const char* name() const noexcept override { return "nan_diagnostic"; }
   double reset_to = -1.0;
 };

@@ -204,13 +204,16 @@ TEST(InputValidation, ZeroSpeedFreezesTheChain) {
 
 TEST(Reset, InitialisesFromMeasuredSteeringAngleInsideTheBound) {
   LeadWheelController controller(ControllerParameters{}, line());
-  controller.reset(0.1);
+  EXPECT_EQ(controller.reset(0.1), Status::ok);
   EXPECT_NEAR(controller.vehicle_steering_angle(controller.chain_angles()[0]), 0.1, 1e-12);
-  controller.reset(1.4);  // beyond the bound: clamped into the invariant set
+  // Beyond the bound: the chain starts at the invariant set's edge (the command approaches it).
+  EXPECT_EQ(controller.reset(1.4), Status::ok);
   EXPECT_LE(std::abs(controller.vehicle_steering_angle(controller.chain_angles()[0])),
             controller.bounds().steering_angle_rad + 1e-12);
-  controller.reset(nan);
-  EXPECT_EQ(controller.chain_angles()[0], 0.0);
+  // NaN is refused and changes nothing.
+  const ChainAngles kept = controller.chain_angles();
+  EXPECT_EQ(controller.reset(nan), Status::invalid_input);
+  EXPECT_EQ(controller.chain_angles(), kept);
 }
 
 TEST(RuleChecker, FieldListsReportTheFirstBrokenFieldInOrder) {

@@ -96,7 +96,7 @@ TEST(Registry, OtherLibrariesCanAddControllerTypes) {
       out.steering_angle_rad = angle_;
       return Status::ok;
     }
-    void reset(double) noexcept override {}
+    Status reset(double) noexcept override { return Status::ok; }
     const char* name() const noexcept override { return "test_fixed"; }
 
    private:

@@ -109,7 +109,10 @@ class SaturatingSteering final : public SteeringController {
     t_ += input.period_s;
     return Status::ok;
   }
-  void reset(double) noexcept override { t_ = 0.0; }
+  Status reset(double) noexcept override {
+    t_ = 0.0;
+    return Status::ok;
+  }
   const char* name() const noexcept override { return "saturating"; }
 
  private:

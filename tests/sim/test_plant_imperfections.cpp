@@ -196,7 +196,10 @@ class PoseRecorder final : public SteeringController {
     poses.push_back({input.rear_axle_position, input.heading_rad});
     return Status::ok;
   }
-  void reset(double) noexcept override { poses.clear(); }
+  Status reset(double) noexcept override {
+    poses.clear();
+    return Status::ok;
+  }
   const char* name() const noexcept override { return "pose_recorder"; }
   std::vector<Pose2> poses;
 };

@@ -24,7 +24,10 @@ class SmoothSteering final : public SteeringController {
     t_ += 0.02;
     return Status::ok;
   }
-  void reset(double) noexcept override { t_ = 0.0; }
+  Status reset(double) noexcept override {
+    t_ = 0.0;
+    return Status::ok;
+  }
   const char* name() const noexcept override { return "smooth"; }
 
  private:

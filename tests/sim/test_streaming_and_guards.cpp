@@ -30,7 +30,10 @@ class NanAfter final : public SteeringController {
     }
     return Status::ok;
   }
-  void reset(double) noexcept override { step_ = 0; }
+  Status reset(double) noexcept override {
+    step_ = 0;
+    return Status::ok;
+  }
   const char* name() const noexcept override { return "nan_after"; }
 
  private:

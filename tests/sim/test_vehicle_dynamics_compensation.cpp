@@ -97,16 +97,27 @@ TEST(SideSlipObserver, ConvergesOnRandomManoeuvresOfTheKineticModel) {
   }
 }
 
-TEST(SideSlipObserver, RejectsNonFiniteMeasurementsAndKeepsItsEstimate) {
+// A NaN gyro or accelerometer sample is a dropped sample: the filter predicts that channel and
+// counts it (sensor_fault_gate.hpp). What it cannot do without (speed, steering angle, period)
+// is refused, and then nothing changes.
+TEST(SideSlipObserver, DropsNonFiniteSamplesAndRefusesNonFiniteInputs) {
   SideSlipObserver observer(SideSlipObserverParameters::from_vehicle(VehicleParameters{}));
   SideSlipMeasurement m{15.0, 0.1, 1.5, 0.02};
   ASSERT_EQ(observer.update(m, 0.02), Status::ok);
-  const double before = observer.rear_axle_side_slip_rad();
   m.lateral_acceleration_mps2 = std::nan("");
+  EXPECT_EQ(observer.update(m, 0.02), Status::ok);
+  EXPECT_EQ(observer.health().lateral_acceleration_dropped, 1u);
+  EXPECT_EQ(observer.health().last_period, fault_lateral_acceleration_dropped);
+  EXPECT_TRUE(std::isfinite(observer.rear_axle_side_slip_rad()));
+  m.lateral_acceleration_mps2 = 1.5;
+  const double before = observer.rear_axle_side_slip_rad();
+  EXPECT_EQ(observer.update(m, 0.0), Status::invalid_input);
+  m.speed_mps = std::nan("");
+  EXPECT_EQ(observer.update(m, 0.02), Status::invalid_input);
+  m.speed_mps = 15.0;
+  m.steering_angle_rad = std::nan("");
   EXPECT_EQ(observer.update(m, 0.02), Status::invalid_input);
   EXPECT_EQ(observer.rear_axle_side_slip_rad(), before);
-  m.lateral_acceleration_mps2 = 1.5;
-  EXPECT_EQ(observer.update(m, 0.0), Status::invalid_input);
 }
 
 // Inversion: a controller with actuator_time_constant_s = T commands delta + 3 T delta' for the

@@ -19,7 +19,7 @@ class ConstantSteering final : public SteeringController {
     output.derivatives_available = 2;
     return Status::ok;
   }
-  void reset(double) noexcept override {}
+  Status reset(double) noexcept override { return Status::ok; }
   const char* name() const noexcept override { return "constant"; }
 
  private:

@@ -172,11 +172,15 @@ TEST(SteeringSystemUpdate, SlipInputs) {
   input.rear_axle_side_slip_rad = 0.9;
   EXPECT_EQ(sensor.update(input, out), Status::invalid_input);
   EXPECT_EQ(out.steering_angle_rad, kept.steering_angle_rad);
-  // A NaN gyro: the observer rejects it, the law runs kinematically this period.
+  // A NaN gyro is a dropped sample: the observer predicts that channel, counts it, and the law
+  // keeps its estimate.
   input.yaw_rate_radps = std::nan("");
   ASSERT_EQ(observed.update(input, out), Status::ok);
-  EXPECT_EQ(out.side_slip.observer_status, Status::invalid_input);
-  EXPECT_EQ(out.side_slip.rear_axle_side_slip_rad, 0.0);
+  EXPECT_EQ(out.side_slip.observer_status, Status::ok);
+  EXPECT_EQ(out.side_slip.sensors.yaw_rate_dropped, 1u);
+  EXPECT_EQ(out.side_slip.sensors.last_period, fault_yaw_rate_dropped);
+  EXPECT_TRUE(out.side_slip.estimate_trusted);
+  EXPECT_EQ(out.side_slip.rear_axle_side_slip_rad, observed.observer()->rear_axle_side_slip_rad());
 }
 
 TEST(SteeringSystemUpdate, ActiveLimitsNameTheBindingBound) {

@@ -55,7 +55,7 @@ class HosmController final : public PathTrackingBaseline<HosmParameters> {
  public:
   HosmController(const HosmParameters& parameters, std::shared_ptr<const Path> path);
 
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "hosm"; }
 
   //! delta' [rad/m] of the law at state (e, psi, delta); exposed for tests.

@@ -79,7 +79,7 @@ class MpcController final : public PathTrackingBaseline<MpcParameters> {
   MpcController(const MpcController&) = delete;
   MpcController& operator=(const MpcController&) = delete;
 
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override {
     return parameters_.solver == MpcSolver::constrained ? "mpc_constrained" : "mpc";
   }

@@ -62,7 +62,7 @@ class NewtonRaphsonController final : public PathTrackingBaseline<NewtonRaphsonP
   NewtonRaphsonController(const NewtonRaphsonParameters& parameters,
                           std::shared_ptr<const Path> path);
 
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "newton_raphson"; }
 
  protected:

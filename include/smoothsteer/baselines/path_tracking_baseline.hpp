@@ -26,9 +26,12 @@ class PathTrackingBaseline : public SteeringController {
     return swap_path(path_, path, rear_hint_, front_hint_);
   }
   //! Restarts from the measured steering angle with cold hints; a controller with more state or
-  //! an angle bound overrides it and calls restart().
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override {
+  //! an angle bound overrides it and calls restart(). invalid_input for an angle
+  //! valid_reset_angle() refuses.
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override {
+    if (!valid_reset_angle(measured_steering_angle_rad)) return Status::invalid_input;
     restart(measured_steering_angle_rad);
+    return Status::ok;
   }
   const Parameters& parameters() const noexcept { return parameters_; }
 

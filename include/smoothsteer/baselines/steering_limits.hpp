@@ -96,7 +96,7 @@ class SaturatedController final : public SteeringController {
 
  public:
   //! Restarts the inner controller and the limiter from the measured angle, at rest.
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return name_.c_str(); }
   //! Forwarded: the wrapped controller decides whether it has a matched-disturbance input.
   Status set_path(std::shared_ptr<const Path> path) noexcept override {

@@ -39,10 +39,14 @@ class LeadWheelController final : public SteeringController {
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
 
  public:
-  //! Re-initialises the chain in stationary cornering at the measured steering angle (clamped
-  //! into the invariant set) for forward driving; the direction is re-detected from v.
+  //! Re-initialises the chain in stationary cornering at the measured steering angle for
+  //! forward driving; the direction is re-detected from v. An angle beyond the invariant set
+  //! starts the chain at its bound, and the command moves from the measured angle to the
+  //! chain's within the rate limit (the governor's R, else the certified rate |v|
+  //! certificate().rate_per_meter), not at once. invalid_input, and nothing changes, for an
+  //! angle valid_reset_angle() refuses with the governor's max_steering_angle_rad.
   //! The disturbance estimate persists across it (DisturbanceEstimator::reset()).
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   //! Clears the disturbance estimate (a new car, a wheel alignment, a test from scratch).
   void forget_disturbance_estimate() noexcept { disturbance_.forget(); }
   const char* name() const noexcept override { return "lead_wheel"; }
@@ -127,6 +131,11 @@ class LeadWheelController final : public SteeringController {
   double prediction_horizon_s(const ControllerInput& input) const noexcept {
     return compensated_delay_s() + input.pose_age_s;
   }
+  //! The rate [rad/s] at which the command approaches the chain's after a reset beyond the set.
+  double approach_rate_radps(double speed) const noexcept;
+  //! While approaching: `steering` held within the approach rate of the last command.
+  void approach_step(double speed, double period_s, double& steering, double& rate,
+                     double& acceleration) noexcept;
   //! Largest lead curvature the friction guard allows at `speed` [1/m] (+inf: no guard).
   double friction_guard_curvature(double speed) const noexcept;
 
@@ -156,6 +165,9 @@ class LeadWheelController final : public SteeringController {
   double previous_speed_ = -1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;
+  //! After a reset beyond the invariant set: the last command while it approaches the chain's.
+  double approach_angle_ = 0.0;
+  bool approaching_ = false;
   ProjectionHint rear_hint_, front_hint_, lead_hint_;
 };
 

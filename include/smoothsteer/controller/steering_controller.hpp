@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/status.hpp"
@@ -88,7 +89,17 @@ inline bool input_in_range(const ControllerInput& input) noexcept {
          within(input.speed_mps, R::max_abs_speed_mps) &&
          within(input.acceleration_mps2, R::max_abs_acceleration_mps2) && input.period_s > 0.0 &&
          input.period_s <= R::max_period_s && input.pose_age_s >= 0.0 &&
-         input.pose_age_s <= ControllerInput::max_pose_age_s;
+         input.pose_age_s <= ControllerInput::max_pose_age_s &&
+         within(input.rear_axle_side_slip_rad, ControllerInput::max_side_slip_rad);
+}
+
+//! A measured steering angle that reset() accepts: |angle| <= limit_rad (the vehicle's angle
+//! limit, where the controller knows one) and below pi / 2 in any case: a road wheel at right
+//! angles to the car or beyond steers along no path, and tan(angle) would wrap it to the other
+//! lock. NaN and inf are refused.
+inline bool valid_reset_angle(double angle_rad,
+                              double limit_rad = std::numbers::pi / 2.0) noexcept {
+  return std::abs(angle_rad) < std::numbers::pi / 2.0 && std::abs(angle_rad) <= limit_rad;
 }
 
 //! True if the command, its derivatives and every diagnostic are finite.
@@ -121,14 +132,17 @@ class SteeringController {
     const Status status = compute_command(input, computed);
     if (status != Status::ok) return status;
     if (!all_finite(computed)) {
-      reset(output.steering_angle_rad);
+      (void)reset(output.steering_angle_rad);
       return Status::numerical_error;
     }
     output = computed;
     return Status::ok;
   }
-  //! Restarts from rest with the measured steering angle of the real vehicle [rad].
-  virtual void reset(double measured_steering_angle_rad = 0.0) noexcept = 0;
+  //! Restarts from rest with the measured steering angle of the real vehicle [rad]. Returns
+  //! invalid_input, and changes nothing, for an angle valid_reset_angle() refuses (NaN, inf,
+  //! |angle| >= pi / 2, or beyond the angle limit the controller knows): never wrapped, never
+  //! silently 0.
+  virtual Status reset(double measured_steering_angle_rad = 0.0) noexcept = 0;
   virtual const char* name() const noexcept = 0;
   //! Replanning: replaces the reference path between two update() calls (docs/replanning.md).
   //! noexcept and allocation free; the controller's state (and so its command) carries on

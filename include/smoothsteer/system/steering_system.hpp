@@ -71,14 +71,18 @@ struct SteeringSystemParameters {
 
 //! What a car's buses and localization give, once per control period.
 struct SteeringSystemInput {
-  Vec2 rear_axle_position;                 //!< rear-axle reference point, world frame [m]
-  double heading_rad = 0.0;                //!< psi [rad]
-  double speed_mps = 0.0;                  //!< signed longitudinal speed v [m/s]
-  double acceleration_mps2 = 0.0;          //!< dv/dt [m/s^2]
-  double yaw_rate_radps = 0.0;             //!< r, gyro [rad/s]
-  double lateral_acceleration_mps2 = 0.0;  //!< a_y at the CG, accelerometer [m/s^2]
-  double period_s = 0.02;                  //!< control period dt [s]
-  //! Measured road-wheel angle delta [rad]; absent: the observer assumes the last command.
+  Vec2 rear_axle_position;         //!< rear-axle reference point, world frame [m]
+  double heading_rad = 0.0;        //!< psi [rad]
+  double speed_mps = 0.0;          //!< signed longitudinal speed v [m/s]
+  double acceleration_mps2 = 0.0;  //!< dv/dt [m/s^2]
+  //! r, gyro [rad/s]. NaN (or any non-finite value): a dropped sample, which the observer
+  //! skips and counts (SideSlipDiagnostics::sensors); the period does not fail.
+  double yaw_rate_radps = 0.0;
+  //! a_y at the CG, accelerometer [m/s^2]. NaN: a dropped sample, as the yaw rate's.
+  double lateral_acceleration_mps2 = 0.0;
+  double period_s = 0.02;  //!< control period dt [s]
+  //! Measured road-wheel angle delta [rad], |delta| <= pi (else invalid_input); absent: the
+  //! observer assumes the last command.
   std::optional<double> steering_angle_rad;
   //! A slip sensor's beta_r [rad] (SlipInput::sensor); absent: 0.
   std::optional<double> rear_axle_side_slip_rad;
@@ -113,6 +117,12 @@ struct SideSlipDiagnostics {
   double yaw_rate_radps = 0.0;           //!< observer's filtered r [rad/s]
   //! The observer's update() status (ok without an observer). Not ok: beta_r = 0 this period.
   Status observer_status = Status::ok;
+  //! False when the observer's estimate is saturated, or no sample has corrected it for a while
+  //! (sensor_fault_gate.hpp): the law then gets beta_r = 0, the kinematic assumption.
+  bool estimate_trusted = true;
+  //! What the observer's gates dropped and rejected (counts since reset) and this period's
+  //! SensorFault bits; all zero without an observer.
+  SideSlipObserverHealth sensors;
 };
 
 struct SteeringSystemOutput {
@@ -142,13 +152,18 @@ class SteeringSystem {
   SteeringSystem(SteeringSystem&&) noexcept = default;
   SteeringSystem& operator=(SteeringSystem&&) noexcept = default;
 
-  //! One control period. Status as SteeringController::update (the output stays unchanged on
-  //! an error); an observer that rejects its measurement gives beta_r = 0 for this period and
-  //! reports its status in side_slip.observer_status.
+  //! One control period. Status as SteeringController::update; on an error nothing changes:
+  //! not the output, not the observer, not the controller (every input is checked before a
+  //! stage takes it). Besides the controller's ControllerInputRange, invalid_input for a
+  //! measured steering angle that is not finite or beyond pi, and for a slip sensor's value
+  //! beyond ControllerInput::max_side_slip_rad (SlipInput::sensor). A gyro or accelerometer
+  //! sample that is dropped (NaN) or fails the observer's gates is skipped, not an error; an
+  //! estimate the observer does not trust gives beta_r = 0 (side_slip.estimate_trusted).
   Status update(const SteeringSystemInput& input, SteeringSystemOutput& output) noexcept;
   //! Restarts the controller at the measured steering angle and the observer from straight
-  //! driving.
-  void reset(double measured_steering_angle_rad = 0.0) noexcept;
+  //! driving. The controller's status (SteeringController::reset): invalid_input for NaN, inf,
+  //! |angle| >= pi / 2 or beyond the car's angle limit, and then nothing changes.
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept;
   //! Replanning: SteeringController::set_path's contract.
   Status set_path(std::shared_ptr<const Path> path) noexcept {
     return controller_->set_path(std::move(path));
@@ -167,6 +182,8 @@ class SteeringSystem {
 
  private:
   void set_up(const SteeringSystemParameters& parameters);
+  //! Everything update() refuses, checked before any stage runs (controller_input_ is set).
+  bool valid_input(const SteeringSystemInput& input) const noexcept;
   double rear_axle_side_slip(const SteeringSystemInput& input, SideSlipDiagnostics& slip) noexcept;
 
   std::unique_ptr<SteeringController> owned_;
@@ -175,6 +192,8 @@ class SteeringSystem {
   const LeadWheelController* lead_wheel_ = nullptr;
   SteeringSystemParameters parameters_;
   std::optional<SideSlipObserver> observer_;
+  //! The observer's next state, committed when the controller accepts the period.
+  std::optional<SideSlipObserver> pending_observer_;
   ControllerInput controller_input_;
   ControllerOutput controller_output_;  //!< the previous output, as update() expects
   double last_command_rad_ = 0.0;

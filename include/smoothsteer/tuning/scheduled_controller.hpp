@@ -28,7 +28,7 @@ class ScheduledController final : public SteeringController {
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
 
  public:
-  void reset(double measured_steering_angle_rad = 0.0) noexcept override;
+  Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "scheduled_lead_wheel"; }
 
   const GainSchedule& schedule() const noexcept { return schedule_; }

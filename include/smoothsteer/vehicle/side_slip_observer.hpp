@@ -25,6 +25,7 @@
 
 #include "smoothsteer/status.hpp"
 #include "smoothsteer/validation.hpp"
+#include "smoothsteer/vehicle/sensor_fault_gate.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
 
 namespace smoothsteer {
@@ -54,6 +55,9 @@ struct SideSlipObserverParameters {
   double gravity_mps2 = 9.81;  //!< g [m/s^2], for the static axle loads
   //! Below this speed the model is singular (1/vx); the estimate is kinematic: beta_r = 0 [m/s].
   double min_speed_mps = 2.0;
+  //! What rejects a bad gyro or accelerometer sample and when the estimate is not trusted
+  //! (sensor_fault_gate.hpp).
+  SideSlipFaultGate fault_gate;
 
   //! The vehicle file's parameters: Cf, Cr = B C D at the static axle loads, and its tires. The
   //! scales model a wrong belief (robustness study): both stiffnesses times
@@ -70,11 +74,12 @@ struct SideSlipObserverParameters {
   void validate() const;  //!< throws std::invalid_argument
 };
 
-//! One period's measurements.
+//! One period's measurements. A non-finite yaw rate or lateral acceleration is a dropped
+//! sample: the filter only predicts that channel (and counts it), the period does not fail.
 struct SideSlipMeasurement {
   double speed_mps = 0.0;                  //!< vx [m/s]; |vx| < min_speed_mps: kinematic
-  double yaw_rate_radps = 0.0;             //!< r [rad/s]
-  double lateral_acceleration_mps2 = 0.0;  //!< a_y at the CG [m/s^2]
+  double yaw_rate_radps = 0.0;             //!< r [rad/s]; NaN: dropped
+  double lateral_acceleration_mps2 = 0.0;  //!< a_y at the CG [m/s^2]; NaN: dropped
   double steering_angle_rad = 0.0;         //!< road-wheel angle delta (measured, not commanded)
 };
 
@@ -83,11 +88,12 @@ class SideSlipObserver {
   //! Validates the parameters (throws std::invalid_argument naming the field).
   explicit SideSlipObserver(const SideSlipObserverParameters& parameters);
 
-  //! Back to straight driving without slip and the initial uncertainty.
+  //! Back to straight driving without slip and the initial uncertainty; clears health().
   void reset() noexcept;
   //! One prediction over `period_s` (with the held steering angle of the measurement) and the
-  //! correction with r and a_y. invalid_input for non-finite values or period_s <= 0; the
-  //! estimate is then unchanged.
+  //! corrections with r and a_y that pass the gates (sensor_fault_gate.hpp); restarts from the
+  //! kinematic model when the estimate stays saturated or uncorrected. invalid_input for a
+  //! non-finite speed or steering angle, or period_s outside (0, 1] s; nothing changes then.
   Status update(const SideSlipMeasurement& measurement, double period_s) noexcept;
 
   double lateral_velocity_mps() const noexcept { return lateral_velocity_; }  //!< vy [m/s]
@@ -98,9 +104,21 @@ class SideSlipObserver {
   //! ControllerInput::rear_axle_side_slip_rad.
   double rear_axle_side_slip_rad() const noexcept { return rear_side_slip_; }
   const SideSlipObserverParameters& parameters() const noexcept { return parameters_; }
+  //! What the gates rejected, and whether the estimate is trusted.
+  const SideSlipObserverHealth& health() const noexcept { return health_; }
 
  private:
+  //! Straight driving and the initial covariance; health() and the gates' memory stay.
+  void reset_estimate() noexcept;
+  //! The kinematic model's state at speed v: beta_r = 0 (vy = lr r), the initial covariance.
+  void restart_from_model(double v, double yaw_rate) noexcept;
+  //! Saturation and outage bookkeeping after a step; restarts the filter when they last.
+  void judge_estimate(bool corrected, double v, double restart_yaw_rate, double period_s,
+                      std::uint32_t& faults) noexcept;
+
   SideSlipObserverParameters parameters_;
+  SensorPlausibility plausibility_;
+  SideSlipObserverHealth health_;
   double lateral_velocity_ = 0.0, yaw_rate_ = 0.0;
   double covariance_[2][2]{};
   double side_slip_ = 0.0, rear_side_slip_ = 0.0;

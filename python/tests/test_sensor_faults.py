@@ -1,0 +1,63 @@
+"""Sensor faults and reset() from Python: the observer's gates report what they dropped and
+rejected (SideSlipDiagnostics.sensors, SensorFault bits), and reset() refuses an angle that is
+no steering angle with ControllerError instead of wrapping it."""
+import math
+
+import numpy as np
+import pytest
+
+import smoothsteer as ss
+from conftest import ROOT
+
+VEHICLE = ROOT / "vehicles" / "passenger_car.yaml"
+
+
+def example_system():
+    car = ss.VehicleDescription(vehicle=ss.VehicleParameters.from_file(str(VEHICLE)))
+    path = ss.Path.from_waypoints(np.array([(0, 0), (30, 0), (60, 3.5), (90, 3.5)], dtype=float))
+    return ss.make_steering_system(car, path, ss.SteeringSystemOptions(max_speed_mps=15.0))
+
+
+def drive(system, steps, gyro=lambda k: 0.0, accelerometer=lambda k: 0.0, start=0):
+    out = None
+    for k in range(start, start + steps):
+        out = system.update((12.0 * 0.02 * k, 0.1), 0.0, 12.0, yaw_rate_radps=gyro(k),
+                            lateral_acceleration_mps2=accelerometer(k), period_s=0.02,
+                            steering_angle_rad=0.0)
+    return out
+
+
+def test_a_gyro_spike_is_rejected_and_counted():
+    system = example_system()
+    drive(system, 50)
+    out = drive(system, 1, gyro=lambda k: 1.0, start=50)
+    assert out.side_slip.sensors.yaw_rate_rejected == 1
+    assert out.side_slip.sensors.last_period & ss.SensorFault.yaw_rate_implausible
+    assert out.side_slip.estimate_trusted
+    assert abs(out.side_slip.rear_axle_side_slip_rad) < 1e-3
+
+
+def test_a_nan_sample_is_dropped_not_an_error():
+    system = example_system()
+    drive(system, 50)
+    out = drive(system, 1, accelerometer=lambda k: math.nan, start=50)
+    assert out.side_slip.observer_status == ss.Status.ok
+    assert out.side_slip.sensors.lateral_acceleration_dropped == 1
+    assert out.side_slip.sensors.last_period == ss.SensorFault.lateral_acceleration_dropped
+
+
+def test_fault_gate_is_a_keyword_group():
+    gate = ss.SideSlipFaultGate(innovation_gate=36.0)
+    observer = ss.SideSlipObserverParameters(fault_gate=gate)
+    assert observer.fault_gate.innovation_gate == 36.0
+    observer.fault_gate = ss.SideSlipFaultGate(innovation_gate=1.0)
+    with pytest.raises(ValueError, match="fault_gate.innovation_gate"):
+        observer.validate()
+
+
+@pytest.mark.parametrize("angle", [2.0, -2.0, 4.0, math.nan, math.inf, 1.1])
+def test_reset_refuses_what_is_no_steering_angle(angle):
+    system = example_system()
+    with pytest.raises(ss.ControllerError, match="invalid_input"):
+        system.reset(angle)
+    system.reset(0.3)  # beyond the certified set but a steering angle: approached, not refused
