@@ -270,7 +270,11 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
     }
     speed.store("cusp_rest_s", YAML::Node(curvature_limits->cusp_rest_s));
   } else if (curvature_limits) {
-    s.speed = curvature_speed_profile(*s.path, *curvature_limits);
+    try {
+      s.speed = curvature_speed_profile(*s.path, *curvature_limits);
+    } catch (const std::invalid_argument& error) {
+      speed.fail("profile", error.what());
+    }
   }
 
   s.controller = YAML::Clone(c.raw("controller"));
