@@ -96,3 +96,15 @@ def test_controller_error_status():
         controller.update((0.0, 0.0), 0.0, 5.0, 0.0, -0.02)
     with pytest.raises(TypeError, match="rear_axle_position"):
         controller.update((1.0, 2.0, 3.0), 0.0, 5.0)
+
+
+@pytest.mark.parametrize("text,got", [("", "an empty file"), ("# nothing\n", "an empty file"),
+                                      ("[1, 2]\n", "a list or a scalar")])
+def test_a_vehicle_file_without_a_mapping_is_refused(tmp_path, text, got):
+    """As the scenario loader refuses it: an empty file is no car, not the default one."""
+    vehicle = tmp_path / "car.yaml"
+    vehicle.write_text(text)
+    with pytest.raises(ss.ConfigError) as error:
+        ss.VehicleParameters.from_file(str(vehicle))
+    assert str(error.value).startswith(f"{vehicle}: expected a mapping of vehicle keys")
+    assert got in str(error.value)
