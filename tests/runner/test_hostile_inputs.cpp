@@ -139,6 +139,11 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
        {},
        {"FILE", "'speed.profile'", "at most 1000000 grid points"},
        64u << 20},
+      {"a controller key below line 1",
+       "name: t\npath: {type: straight}\nspeed: {initial_mps: 5}\n\n\ncontroller:\n"
+       "  type: lead_wheel\n  k_rob: 1.5\n",
+       {},
+       {"FILE", "key 'controller.k_rob' (line 8)", "[0, 1)"}},
       {"lane change x_start 1e17",
        "path: {type: lane_change}\ncontroller: {type: lead_wheel}\n",
        {"path.x_start_m=1e17"},
