@@ -185,7 +185,8 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
       if (const std::optional<std::size_t> turn = Path::find_reversal(points)) {
         c.fail("points", "element " + std::to_string(*turn) +
                              ": the path turns back on itself there (more than 120 degrees from "
-                             "the previous chord to the next); a path that changes direction "
+                             "the previous chord to the next, alone or with the turns within 1 "
+                             "mm after it); a path that changes direction "
                              "needs one path per direction (docs/cusps.md)");
       }
       c.store("points", resolved);
