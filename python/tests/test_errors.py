@@ -146,3 +146,22 @@ def test_the_steering_system_names_the_bad_input_and_a_missing_path():
         system.update((41.0, 0.0), math.pi / 2, 1e4)
     with pytest.raises(ss.ControllerError, match=r"the path is None"):
         system.set_path(None)
+
+
+@pytest.mark.parametrize("group,field,value,named,rule", [
+    ("law", "boundary_layer", math.nan, "controller.law.boundary_layer = nan", "finite"),
+    ("law", "k_rob", 0.2, "controller.law.k_rob = 0.2", "gain schedule"),
+    ("feedforward", "share", 0.7, "controller.feedforward.share = 0.7", "gain schedule"),
+])
+def test_the_schedule_template_refuses_what_it_cannot_honour(group, field, value, named, rule):
+    """k_rob and the feedforward share were silently replaced by the schedule's, and a NaN
+    boundary layer came back from the tuner as InfeasibleLimits."""
+    car = ss.VehicleDescription(
+        vehicle=ss.VehicleParameters.from_file("vehicles/passenger_car.yaml"))
+    options = ss.SteeringSystemOptions()
+    setattr(getattr(options.controller, group), field, value)
+    with pytest.raises(ValueError) as error:
+        ss.make_steering_system(car, ss.Path.circle((0.0, 0.0), 40.0), options)
+    assert not isinstance(error.value, ss.InfeasibleLimits), str(error.value)
+    assert str(error.value).startswith(f"SteeringSystemOptions: {named} "), str(error.value)
+    assert rule in str(error.value)
