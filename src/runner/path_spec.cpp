@@ -113,6 +113,10 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
           if (next != gear && !run_started) gear = next;  // the first piece's gear
           if (next != gear) {
             if (!plan) piece.fail("gear", "a change of gear needs a closed-loop run on a plan");
+            if (runs.size() == PathPlan::max_cusps) {
+              piece.fail("gear", "more than PathPlan::max_cusps = " +
+                                     std::to_string(PathPlan::max_cusps) + " gear changes");
+            }
             runs.push_back({std::make_shared<const Path>(builder.build()), gear});
             builder = PathBuilder(builder.end_position(), builder.end_heading_rad() + pi);
             gear = next;

@@ -97,6 +97,17 @@ std::string schedule_scenario(const std::string& schedule) {
          schedule + "}\n";
 }
 
+//! A shuttle of `changes` gear changes, 2 m each way.
+std::string shuttle_text(int changes) {
+  std::string text = "path:\n  type: segments\n  pieces:\n";
+  for (int i = 0; i <= changes; ++i) {
+    text.append("  - {gear: ").append(i % 2 ? "reverse" : "forward").append(", line_m: 2}\n");
+  }
+  return text.append(
+      "speed: {profile: curvature, max_mps: 1, max_lateral_acceleration_mps2: "
+      "1}\ncontroller: {type: lead_wheel}\n");
+}
+
 TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
   const std::string billion_laughs = billion_laughs_text();
   const std::string alias_map = alias_map_text();
@@ -139,6 +150,10 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
        {},
        {"FILE", "'speed.profile'", "at most 1000000 grid points"},
        64u << 20},
+      {"10 001 gear changes",
+       shuttle_text(10001),
+       {},
+       {"FILE", "'path.pieces[10001].gear'", "max_cusps = 10000"}},
       {"a controller key below line 1",
        "name: t\npath: {type: straight}\nspeed: {initial_mps: 5}\n\n\ncontroller:\n"
        "  type: lead_wheel\n  k_rob: 1.5\n",
