@@ -41,7 +41,11 @@ def run_campaign(spec, out, scheduler=None, workers=None, client=None, serial=Fa
         if scheduler:
             from distributed import Client
 
-            client = Client(scheduler)
+            try:
+                client = Client(scheduler)
+            except Exception as error:  # noqa: BLE001 - any failure to connect is the address's
+                raise CampaignSpecError(f"--scheduler {scheduler}: cannot connect to a Dask "
+                                        f"scheduler: {type(error).__name__}: {error}") from None
         else:
             client, cluster = local_client(workers)
         own_client = True
@@ -95,6 +99,10 @@ def main(argv=None):
             print(f"wrote {write_report(spec, arguments.out)}")
     except CampaignSpecError as error:
         print(f"error: {error}", file=sys.stderr)
+        return 2
+    except OSError as error:  # a file of the results directory that cannot be written
+        print(f"error: --out {arguments.out}: {error.filename or ''}: {error.strerror or error}",
+              file=sys.stderr)
         return 2
     return 0
 

@@ -15,6 +15,12 @@ KINDS = ("uniform", "log_uniform", "normal", "integer", "choice")
 # The normal's range checked against the scenario's rules when it is not truncated: a draw
 # beyond 6 standard deviations has probability 2e-9.
 NORMAL_CHECK_SIGMAS = 6.0
+# Values of one choice: each is checked by a load of the scenario before any case runs (about
+# 1.5 ms each), and the report counts each.
+MAX_CHOICE_VALUES = 1000
+# Most multiples of `step` in a variable's range of magnitudes: draw / step stays an exact
+# float and its rounding cannot overflow.
+MAX_STEPS = 1e15
 
 
 def case_generator(seed, case, key):
@@ -56,6 +62,13 @@ class Variable:
             else None
         if self.step == 0.0:
             node.child("step").fail("value 0 must be > 0")
+        if self.step:
+            ends = [getattr(self, name, None) for name in ("low", "high", "mean")]
+            magnitude = max(abs(v) for v in ends if v is not None) + \
+                NORMAL_CHECK_SIGMAS * getattr(self, "std", 0.0)
+            if magnitude / self.step > MAX_STEPS:
+                node.child("step").fail(f"value {self.step!r} is too small for the range: at "
+                                        f"most {MAX_STEPS:g} steps up to {magnitude:g}")
         for name in ("low", "high"):
             value = getattr(self, name, None)
             if self.step and value is not None and self._round(value) != value:
@@ -88,7 +101,7 @@ class Variable:
 
     def _parse_choice(self, node):
         values = node.child("values")
-        self.values = [item.value for item in values.items()]
+        self.values = [item.value for item in values.items(most=MAX_CHOICE_VALUES)]
         if not self.values:
             values.fail("must list at least one value")
         self.weights = None

@@ -10,6 +10,7 @@ import fcntl
 import io
 import json
 import os
+import stat
 
 from .campaign_cases import cell, columns
 from .campaign_yaml import CampaignSpecError
@@ -18,17 +19,73 @@ RESULTS = "results.csv"
 METADATA = "campaign.json"
 
 
+def _out_error(out, problem):
+    return CampaignSpecError(f"--out {out}: {problem}")
+
+
+def _kind(path):
+    """What a path that is not a directory is, in words."""
+    if os.path.islink(path) and not os.path.exists(path):
+        return f"a symbolic link to {os.readlink(path)}, which does not exist"
+    mode = os.stat(path).st_mode
+    if stat.S_ISREG(mode):
+        return "a file"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    return "not a directory"
+
+
+def check_out(out):
+    """The results directory, created if it does not exist; CampaignSpecError naming `--out`
+    and the problem when it is not a directory or cannot be written."""
+    if os.path.lexists(out) and not os.path.isdir(out):
+        raise _out_error(out, f"is {_kind(out)}, not a directory; give a directory (it is "
+                              "created if missing)")
+    try:
+        os.makedirs(out, exist_ok=True)
+    except OSError as error:
+        raise _out_error(out, f"cannot create the results directory: {error.strerror}") from None
+    results = os.path.join(out, RESULTS)
+    if os.path.lexists(results) and not os.path.isfile(results):
+        raise CampaignSpecError(f"--out {out}: {RESULTS} is "
+                                f"{'a directory' if os.path.isdir(results) else _kind(results)}"
+                                ", not a file; give another --out")
+
+
+def read_metadata(out):
+    """DIR/campaign.json as a dict, or None if the directory has none."""
+    path = os.path.join(out, METADATA)
+    if not os.path.lexists(path):
+        return None
+    try:
+        with open(path, encoding="utf-8") as handle:
+            metadata = json.load(handle)
+    except (OSError, UnicodeDecodeError, ValueError) as error:
+        reason = error.strerror if isinstance(error, OSError) else f"not valid JSON ({error})"
+        raise _out_error(out, f"{METADATA} cannot be read: {reason}; it says which campaign "
+                              f"the rows of {RESULTS} belong to: restore it or give another "
+                              "--out") from None
+    if not isinstance(metadata, dict):
+        raise _out_error(out, f"{METADATA} is not a campaign's metadata (a JSON object); give "
+                              "another --out")
+    return metadata
+
+
 class ResultFile:
     """results.csv of one campaign, opened for appending; `done` is the set of cases it has."""
 
     def __init__(self, out, spec):
-        os.makedirs(out, exist_ok=True)
+        check_out(out)
         self.out, self.path = out, os.path.join(out, RESULTS)
         self.columns = columns(spec)
-        self._check_metadata(spec)
-        self.done = set()
-        exists = os.path.exists(self.path)
-        self.handle = open(self.path, "a+", newline="", encoding="utf-8")
+        try:
+            self._check_metadata(spec)
+            self.done = set()
+            exists = os.path.exists(self.path)
+            self.handle = open(self.path, "a+", newline="", encoding="utf-8")
+        except OSError as error:
+            raise _out_error(out, f"cannot write {os.path.basename(error.filename or self.path)}"
+                                  f": {error.strerror}") from None
         try:
             fcntl.flock(self.handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
@@ -44,9 +101,8 @@ class ResultFile:
     def _check_metadata(self, spec):
         path = os.path.join(self.out, METADATA)
         identity = spec.identity()
-        if os.path.exists(path):
-            with open(path, encoding="utf-8") as handle:
-                previous = json.load(handle)
+        previous = read_metadata(self.out)
+        if previous is not None:
             if previous.get("identity") != identity:
                 raise CampaignSpecError(
                     f"{self.out}: holds the rows of another campaign ({previous.get('spec')}, "
@@ -105,7 +161,15 @@ def read_rows(out, spec):
     """The rows of DIR/results.csv for cases 0 .. spec.cases - 1, sorted by case (pandas)."""
     import pandas as pd
 
-    frame = pd.read_csv(os.path.join(out, RESULTS), keep_default_na=False, na_values=[""],
+    path = os.path.join(out, RESULTS)
+    if not os.path.isdir(out):
+        raise _out_error(out, "no such results directory; run the campaign first (without "
+                              "--report-only)")
+    check_out(out)
+    if not os.path.isfile(path) or os.path.getsize(path) == 0:
+        raise _out_error(out, f"holds no {RESULTS}; run the campaign first (without "
+                              "--report-only)")
+    frame = pd.read_csv(path, keep_default_na=False, na_values=[""],
                         float_precision="round_trip",
                         dtype={"error_kind": str, "error": str, "status": str,
                                "overrides": str, "stop_reason": str, "sim_status": str})

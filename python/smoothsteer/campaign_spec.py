@@ -16,7 +16,9 @@ from .campaign_yaml import CampaignSpecError, read
 
 KEYS = ("name", "description", "base", "cases", "seed", "batch_size", "overrides", "variables",
         "metrics", "criteria", "report")
-MAX_CASES = 10**8
+# Cases of one campaign: 10^6 rows of results.csv are about 300 MB and 12 hours at 24 cases/s
+# (docs/campaigns.md); the pending cases and the report's table fit in memory.
+MAX_CASES = 10**6
 # Sums of summary.json's counts, as the comparison study's columns (docs/metrics.md).
 DERIVED_METRICS = {
     "held_above_limits": ("angle_violations", "held_rate_violations",
@@ -67,7 +69,7 @@ class CampaignSpec:
         self.file = os.path.abspath(file)
         self.name = root.child("name").text() if "name" in spec else \
             os.path.splitext(os.path.basename(file))[0]
-        self.description = root.child("description").value if "description" in spec else ""
+        self.description = root.child("description").text() if "description" in spec else ""
         base = root.child("base")
         self.base = os.path.normpath(os.path.join(os.path.dirname(self.file), base.text()))
         if not os.path.isfile(self.base):
@@ -94,8 +96,10 @@ class CampaignSpec:
         if "criteria" in spec:
             node = root.child("criteria")
             self.criteria = [Criterion(node.child(key)) for key in node.mapping(known)]
-        metrics = [m.value for m in root.child("metrics").items()] if "metrics" in spec \
+        metrics = [m.text() for m in root.child("metrics").items()] if "metrics" in spec \
             else list(DEFAULT_METRICS)
+        if not metrics:
+            root.child("metrics").fail("must list at least one metric")
         for index, name in enumerate(metrics):
             if name not in known:
                 root.child("metrics").child(index).fail(

@@ -15,12 +15,21 @@ namespace smoothsteer::python {
 
 namespace py = pybind11;
 
-//! A real-time call returned an error status; Python sees smoothsteer.ControllerError.
+//! A real-time call returned an error status; Python sees smoothsteer.ControllerError, its
+//! message "<call> returned <status>[: <what was wrong>]", as the CLI's names the input.
 class ControllerError : public std::runtime_error {
  public:
-  explicit ControllerError(Status status)
-      : std::runtime_error(std::string("update() returned ") + to_string(status)) {}
+  explicit ControllerError(Status status, const std::string& detail = "",
+                           const std::string& call = "update()")
+      : std::runtime_error(call + " returned " + to_string(status) +
+                           (detail.empty() ? "" : ": " + detail)) {}
 };
+
+//! The first input of a control step outside ControllerInputRange, named with its value and
+//! bound ("speed_mps = 10000 is outside ControllerInputRange: magnitude <= 1000 m/s"); empty if
+//! every one is inside.
+std::string input_range_detail(const Vec2& rear_axle_position, double heading_rad, double speed_mps,
+                               double acceleration_mps2, double period_s);
 
 //! ConfigError, InfeasibleLimits and ControllerError as Python exceptions.
 void bind_errors(py::module_& m);

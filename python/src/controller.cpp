@@ -107,7 +107,7 @@ py::list field_rows() {
   return rows;
 }
 
-//! One update() call; a non-ok status raises ControllerError.
+//! One update() call; a non-ok status raises ControllerError naming the bad input.
 ControllerOutput update(SteeringController& controller, const py::object& position,
                         double heading_rad, double speed_mps, double acceleration_mps2,
                         double period_s, double rear_axle_side_slip_rad, double pose_age_s) {
@@ -117,11 +117,50 @@ ControllerOutput update(SteeringController& controller, const py::object& positi
   input.pose_age_s = pose_age_s;
   ControllerOutput output;
   const Status status = controller.update(input, output);
-  if (status != Status::ok) throw ControllerError(status);
+  if (status != Status::ok) {
+    throw ControllerError(status, input_range_detail(input.rear_axle_position, heading_rad,
+                                                     speed_mps, acceleration_mps2, period_s));
+  }
   return output;
 }
 
+//! set_path(None) is a caller's mistake the status cannot name.
+[[noreturn]] void refuse_missing_path(Status status) {
+  throw ControllerError(status, "the path is None; give a smoothsteer.Path", "set_path()");
+}
+
 }  // namespace
+
+std::string input_range_detail(const Vec2& rear_axle_position, double heading_rad, double speed_mps,
+                               double acceleration_mps2, double period_s) {
+  using R = ControllerInputRange;
+  const struct {
+    const char* name;
+    double value;
+    double bound;
+    const char* unit;
+  } checks[] = {
+      {"rear_axle_position.x", rear_axle_position.x, R::max_abs_coordinate_m, "m"},
+      {"rear_axle_position.y", rear_axle_position.y, R::max_abs_coordinate_m, "m"},
+      {"heading_rad", heading_rad, R::max_abs_heading_rad, "rad"},
+      {"speed_mps", speed_mps, R::max_abs_speed_mps, "m/s"},
+      {"acceleration_mps2", acceleration_mps2, R::max_abs_acceleration_mps2, "m/s^2"},
+  };
+  for (const auto& check : checks) {
+    if (!(std::abs(check.value) <= check.bound)) {
+      return std::string(check.name) + " = " +
+             py::str(py::float_(check.value)).cast<std::string>() +
+             " is outside ControllerInputRange (finite, magnitude <= " +
+             py::str(py::float_(check.bound)).cast<std::string>() + " " + check.unit + ")";
+    }
+  }
+  if (!(period_s > 0.0 && period_s <= R::max_period_s)) {
+    return "period_s = " + py::str(py::float_(period_s)).cast<std::string>() +
+           " is outside ControllerInputRange (in (0, " +
+           py::str(py::float_(R::max_period_s)).cast<std::string>() + "] s)";
+  }
+  return "";
+}
 
 void bind_controller(py::module_& m) {
   py::enum_<Status>(m, "Status", "Result of a real-time call.")
@@ -367,8 +406,10 @@ void bind_controller(py::module_& m) {
       .def(
           "set_path",
           [](SteeringController& controller, std::shared_ptr<Path> path) {
+            const bool missing = !path;
             const Status status = controller.set_path(std::move(path));
-            if (status != Status::ok) throw ControllerError(status);
+            if (status != Status::ok && missing) refuse_missing_path(status);
+            if (status != Status::ok) throw ControllerError(status, "", "set_path()");
           },
           py::arg("path"), "Replanning: replaces the path between two update() calls.");
 

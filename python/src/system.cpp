@@ -44,7 +44,10 @@ SteeringSystemOutput update(SteeringSystem& system, const py::object& position, 
   input.pose_age_s = pose_age_s;
   SteeringSystemOutput output;
   const Status status = system.update(input, output);
-  if (status != Status::ok) throw ControllerError(status);
+  if (status != Status::ok) {
+    throw ControllerError(status, input_range_detail(input.rear_axle_position, heading_rad,
+                                                     speed_mps, acceleration_mps2, period_s));
+  }
   return output;
 }
 
@@ -283,8 +286,12 @@ void bind_system(py::module_& m) {
       .def(
           "set_path",
           [](SteeringSystem& system, std::shared_ptr<Path> path) {
+            const bool missing = !path;
             const Status status = system.set_path(std::move(path));
-            if (status != Status::ok) throw ControllerError(status);
+            if (status != Status::ok) {
+              throw ControllerError(
+                  status, missing ? "the path is None; give a smoothsteer.Path" : "", "set_path()");
+            }
           },
           py::arg("path"), "Replanning: replaces the path between two update() calls.")
       .def_property_readonly("parameters", &SteeringSystem::parameters);

@@ -96,3 +96,72 @@ def test_controller_error_status():
         controller.update((0.0, 0.0), 0.0, 5.0, 0.0, -0.02)
     with pytest.raises(TypeError, match="rear_axle_position"):
         controller.update((1.0, 2.0, 3.0), 0.0, 5.0)
+
+
+@pytest.mark.parametrize("text,got", [("", "an empty file"), ("# nothing\n", "an empty file"),
+                                      ("[1, 2]\n", "a list or a scalar")])
+def test_a_vehicle_file_without_a_mapping_is_refused(tmp_path, text, got):
+    """As the scenario loader refuses it: an empty file is no car, not the default one."""
+    vehicle = tmp_path / "car.yaml"
+    vehicle.write_text(text)
+    with pytest.raises(ss.ConfigError) as error:
+        ss.VehicleParameters.from_file(str(vehicle))
+    assert str(error.value).startswith(f"{vehicle}: expected a mapping of vehicle keys")
+    assert got in str(error.value)
+
+
+@pytest.mark.parametrize("arguments,named", [
+    (((math.nan, 0.0), 0.0, 5.0), "rear_axle_position.x = nan"),
+    (((0.0, 2e9), 0.0, 5.0), "rear_axle_position.y = 2000000000.0"),
+    (((0.0, 0.0), math.inf, 5.0), "heading_rad = inf"),
+    (((0.0, 0.0), 0.0, 1e4), "speed_mps = 10000.0"),
+    (((0.0, 0.0), 0.0, 5.0, -1e5), "acceleration_mps2 = -100000.0"),
+    (((0.0, 0.0), 0.0, 5.0, 0.0, -0.02), "period_s = -0.02"),
+])
+def test_a_controller_error_names_the_bad_input(arguments, named):
+    """As the CLI's message does ("its input speed = ... is outside ControllerInputRange")."""
+    controller = ss.LeadWheelController(ss.ControllerParameters(), ss.Path.circle((0, 0), 30.0))
+    with pytest.raises(ss.ControllerError) as error:
+        controller.update(*arguments)
+    message = str(error.value)
+    assert message.startswith("update() returned invalid_input: "), message
+    assert named in message and "ControllerInputRange" in message, message
+
+
+def test_set_path_none_says_the_path_is_none():
+    controller = ss.LeadWheelController(ss.ControllerParameters(), ss.Path.circle((0, 0), 30.0))
+    with pytest.raises(ss.ControllerError, match=r"^set_path\(\) returned invalid_input: the "
+                                                 r"path is None"):
+        controller.set_path(None)
+    controller.update((30.0, 0.0), math.pi / 2, 5.0)  # the old path stays
+
+
+def test_the_steering_system_names_the_bad_input_and_a_missing_path():
+    vehicle = ss.VehicleParameters()
+    controller = ss.LeadWheelController(
+        ss.ControllerParameters(vehicle_wheelbase_m=vehicle.wheelbase_m),
+        ss.Path.circle((0.0, 0.0), 40.0))
+    system = ss.SteeringSystem(controller, ss.SteeringSystemParameters())
+    with pytest.raises(ss.ControllerError, match=r"invalid_input: speed_mps = 10000\.0 is"):
+        system.update((41.0, 0.0), math.pi / 2, 1e4)
+    with pytest.raises(ss.ControllerError, match=r"the path is None"):
+        system.set_path(None)
+
+
+@pytest.mark.parametrize("group,field,value,named,rule", [
+    ("law", "boundary_layer", math.nan, "controller.law.boundary_layer = nan", "finite"),
+    ("law", "k_rob", 0.2, "controller.law.k_rob = 0.2", "gain schedule"),
+    ("feedforward", "share", 0.7, "controller.feedforward.share = 0.7", "gain schedule"),
+])
+def test_the_schedule_template_refuses_what_it_cannot_honour(group, field, value, named, rule):
+    """k_rob and the feedforward share were silently replaced by the schedule's, and a NaN
+    boundary layer came back from the tuner as InfeasibleLimits."""
+    car = ss.VehicleDescription(
+        vehicle=ss.VehicleParameters.from_file("vehicles/passenger_car.yaml"))
+    options = ss.SteeringSystemOptions()
+    setattr(getattr(options.controller, group), field, value)
+    with pytest.raises(ValueError) as error:
+        ss.make_steering_system(car, ss.Path.circle((0.0, 0.0), 40.0), options)
+    assert not isinstance(error.value, ss.InfeasibleLimits), str(error.value)
+    assert str(error.value).startswith(f"SteeringSystemOptions: {named} "), str(error.value)
+    assert rule in str(error.value)

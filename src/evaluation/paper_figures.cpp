@@ -1,12 +1,12 @@
 #include "smoothsteer/evaluation/paper_figures.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "smoothsteer/evaluation/results_table.hpp"
+#include "smoothsteer/io/bounded_file.hpp"
 
 namespace smoothsteer {
 
@@ -23,8 +23,9 @@ std::vector<std::string> split_fields(const std::string& line) {
 }  // namespace
 
 PaperFigures PaperFigures::load(const std::string& file) {
-  std::ifstream input(file);
-  if (!input) throw std::runtime_error(file + ": cannot open");
+  // Regular files only, bounded: a FIFO blocked the reader and /dev/zero read 4.2 GB.
+  std::istringstream input(
+      io::read_bounded_file(file, max_paper_figures_file_bytes, "paper figures file"));
   PaperFigures figures;
   std::string line;
   bool header_seen = false;

@@ -12,6 +12,7 @@
 #include "parallel_cases.hpp"
 #include "scenario_setup.hpp"
 #include "smoothsteer/baselines/comparison_controllers.hpp"
+#include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer {
@@ -133,6 +134,16 @@ void RoadSuiteOptions::validate() const {
   if (road_files.empty()) throw std::invalid_argument("RoadSuiteOptions: road_files is empty");
   if (vehicle_files.empty()) {
     throw std::invalid_argument("RoadSuiteOptions: vehicle_files is empty");
+  }
+  // Each car's own error, before any run: a broken file used to surface only as a missing
+  // schedule of the certified route.
+  for (const std::string& vehicle : vehicle_files) {
+    try {
+      io::load_vehicle_file(vehicle);
+    } catch (const std::exception& error) {
+      throw std::invalid_argument("RoadSuiteOptions: vehicle_files (--vehicles) " + vehicle +
+                                  " cannot be read: " + error.what());
+    }
   }
   if (models.empty()) throw std::invalid_argument("RoadSuiteOptions: models is empty");
   for (const std::string& model : models) {

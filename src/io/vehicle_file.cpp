@@ -105,7 +105,13 @@ VehicleParameters check_vehicle_mapping(const YAML::Node& vehicle, const std::st
 }
 
 VehicleParameters load_vehicle_file(const std::string& yaml_path) {
-  return check_vehicle_mapping(load_yaml_file(yaml_path), yaml_path);
+  const YAML::Node root = load_yaml_file(yaml_path);
+  // As the scenario loader refuses it: an empty file is no car, not the default one.
+  if (!root.IsMap()) {
+    throw ConfigError(yaml_path + ": expected a mapping of vehicle keys (mass_kg, ...), got " +
+                      (root.IsNull() ? "an empty file" : "a list or a scalar"));
+  }
+  return check_vehicle_mapping(root, yaml_path);
 }
 
 }  // namespace smoothsteer::io

@@ -68,7 +68,8 @@ std::vector<Vec2> parse_waypoint_csv(const std::string& text, const std::string&
   if (const std::optional<std::size_t> turn = Path::find_reversal(points)) {
     throw ConfigError(file + ": line " + std::to_string(lines[*turn]) +
                       ": the path turns back on itself at this waypoint (more than 120 degrees "
-                      "from the previous chord to the next); a path that changes direction needs "
+                      "from the previous chord to the next, alone or with the turns within 1 mm "
+                      "after it); a path that changes direction needs "
                       "one path per direction (docs/cusps.md)");
   }
   return points;

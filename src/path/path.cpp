@@ -186,8 +186,9 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
     const double angle = std::abs(std::atan2(cross(before, after), dot(before, after)));
     fail(std::string(where) + ": waypoints[" + std::to_string(*turn) + "]: the path turns by " +
          detail::format_number(angle) +
-         " rad there, more than max_waypoint_turn_rad = 2 pi / 3: it doubles back on itself; "
-         "a change of direction needs one path per direction (PathPlan, docs/cusps.md)");
+         " rad there (with the turns within 1 mm after it, more than max_waypoint_turn_rad = 2 "
+         "pi / 3): it doubles back on itself; a change of direction needs one path per "
+         "direction (PathPlan, docs/cusps.md)");
   }
   if (waypoints.size() == 2) {
     const Vec2 chord = waypoints[1] - waypoints[0];
@@ -195,16 +196,6 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
         {PathSegment::make_line(waypoints[0], std::atan2(chord.y, chord.x), norm(chord))}, false);
   }
   return assemble(detail::natural_cubic_spline(waypoints), false);
-}
-
-std::optional<std::size_t> Path::find_reversal(const std::vector<Vec2>& waypoints) noexcept {
-  for (std::size_t i = 1; i + 1 < waypoints.size(); ++i) {
-    const Vec2 before = waypoints[i] - waypoints[i - 1];
-    const Vec2 after = waypoints[i + 1] - waypoints[i];
-    const double angle = std::abs(std::atan2(cross(before, after), dot(before, after)));
-    if (angle > max_waypoint_turn_rad) return i;
-  }
-  return std::nullopt;
 }
 
 Path Path::from_segments(std::vector<PathSegment> segments, bool closed) {

@@ -21,6 +21,11 @@ namespace {
 PathPlan PathPlan::from_pieces(std::vector<PathPiece> pieces) {
   constexpr const char* where = "PathPlan::from_pieces";
   if (pieces.empty()) fail(std::string(where) + ": pieces is empty; need at least 1 piece");
+  if (pieces.size() > max_cusps + 1) {
+    fail(std::string(where) + ": " + std::to_string(pieces.size()) + " pieces, " +
+         std::to_string(pieces.size() - 1) +
+         " gear changes; at most max_cusps = " + std::to_string(max_cusps));
+  }
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const std::string name = "pieces[" + std::to_string(i) + "]";
     if (!pieces[i].path)

@@ -113,6 +113,10 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
           if (next != gear && !run_started) gear = next;  // the first piece's gear
           if (next != gear) {
             if (!plan) piece.fail("gear", "a change of gear needs a closed-loop run on a plan");
+            if (runs.size() == PathPlan::max_cusps) {
+              piece.fail("gear", "more than PathPlan::max_cusps = " +
+                                     std::to_string(PathPlan::max_cusps) + " gear changes");
+            }
             runs.push_back({std::make_shared<const Path>(builder.build()), gear});
             builder = PathBuilder(builder.end_position(), builder.end_heading_rad() + pi);
             gear = next;
@@ -185,7 +189,8 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
       if (const std::optional<std::size_t> turn = Path::find_reversal(points)) {
         c.fail("points", "element " + std::to_string(*turn) +
                              ": the path turns back on itself there (more than 120 degrees from "
-                             "the previous chord to the next); a path that changes direction "
+                             "the previous chord to the next, alone or with the turns within 1 "
+                             "mm after it); a path that changes direction "
                              "needs one path per direction (docs/cusps.md)");
       }
       c.store("points", resolved);

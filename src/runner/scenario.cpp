@@ -354,12 +354,18 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
     }
     speed.store("cusp_rest_s", YAML::Node(curvature_limits->cusp_rest_s));
   } else if (curvature_limits) {
-    s.speed = curvature_speed_profile(*s.path, *curvature_limits);
+    try {
+      s.speed = curvature_speed_profile(*s.path, *curvature_limits);
+    } catch (const std::invalid_argument& error) {
+      speed.fail("profile", error.what());
+    }
   }
 
+  // Checked on the document's own node, whose marks give each key's line (a clone's are all
+  // line 1); the clone is what the scenario keeps.
   s.controller = YAML::Clone(c.raw("controller"));
   YAML::Node resolved_controller;
-  make_controller(s.controller, "controller", file, {s.path, s.vehicle, s.actuator},
+  make_controller(c.raw("controller"), "controller", file, {s.path, s.vehicle, s.actuator},
                   &resolved_controller, overridden);
   c.finish();
 

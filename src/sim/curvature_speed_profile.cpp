@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -40,13 +41,28 @@ std::optional<Violation> CurvatureSpeedLimits::first_violation() const noexcept 
 
 namespace {
 
+//! Intervals of the grid on a path of `length`; std::invalid_argument before any allocation
+//! when the grid would have more than max_speed_grid_points points (a 2e7 m line took 31 s and
+//! 2.85 GB, and 1e8 m ended in std::bad_alloc).
+double grid_intervals(double length, double spacing) {
+  const double intervals = std::max(1.0, std::ceil(length / spacing));
+  if (!(intervals < static_cast<double>(max_speed_grid_points))) {
+    std::ostringstream message;
+    message << "CurvatureSpeedLimits: the path is " << length << " m long, " << intervals
+            << " grid intervals of spacing_m = " << spacing << " m; at most "
+            << max_speed_grid_points << " grid points (a path of at most "
+            << spacing * static_cast<double>(max_speed_grid_points - 1) << " m)";
+    throw std::invalid_argument(message.str());
+  }
+  return intervals;
+}
+
 //! The limited speeds with v(0) <= first and v(end) <= last.
 std::vector<double> limited_speeds(const Path& path, const CurvatureSpeedLimits& limits,
                                    double first, double last) {
   limits.validate();
   const double length = path.length();
-  const auto intervals =
-      static_cast<std::size_t>(std::max(1.0, std::ceil(length / limits.spacing_m)));
+  const auto intervals = static_cast<std::size_t>(grid_intervals(length, limits.spacing_m));
   const double ds = length / static_cast<double>(intervals);
   // The largest |kappa| within one spacing of each grid point, sampled at ds / 8.
   constexpr int kFine = 8;
@@ -117,6 +133,11 @@ SpeedProfile curvature_speed_profile(const Path& path, const CurvatureSpeedLimit
 
 SpeedProfile curvature_speed_profile(const PathPlan& plan, const CurvatureSpeedLimits& limits) {
   limits.validate();
+  // All pieces together on one grid budget, checked before any piece is sampled.
+  double total_length = 0.0;
+  for (std::size_t p = 0; p < plan.piece_count(); ++p) total_length += plan.piece(p).path->length();
+  grid_intervals(total_length + limits.spacing_m * static_cast<double>(plan.piece_count()),
+                 limits.spacing_m);
   auto knots = std::make_shared<std::vector<SpeedKnot>>();
   const bool stops = plan.cusp_count() > 0;
   for (std::size_t p = 0; p < plan.piece_count(); ++p) {

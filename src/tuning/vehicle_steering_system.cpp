@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "smoothsteer/tuning/gain_schedule.hpp"
@@ -130,9 +131,40 @@ ControllerParameters steering_system_controller(const VehicleDescription& car,
   return p;
 }
 
+namespace {
+
+//! What the template may not say: the gain schedule sets k_rob and the feedforward share per
+//! speed, so a value given here would be dropped without a word; and the boundary layer, which
+//! the tuner does not check (a NaN one came back as InfeasibleLimits).
+void check_schedule_template(const ControllerParameters& controller) {
+  const ControllerParameters defaults = default_steering_system_controller();
+  const double epsilon = controller.law.boundary_layer;
+  if (!(std::isfinite(epsilon) && epsilon >= 0.0)) {
+    throw std::invalid_argument("SteeringSystemOptions: controller.law.boundary_layer = " +
+                                exact_number(epsilon) + " must be finite and >= 0");
+  }
+  const auto scheduled = [](const char* field, double value, double default_value) {
+    throw std::invalid_argument(
+        std::string("SteeringSystemOptions: controller.") + field + " = " + exact_number(value) +
+        " is set per speed by the gain schedule, which would override it; leave it at " +
+        exact_number(default_value) +
+        " (for a fixed value, build a LeadWheelController, or a ScheduledController from your "
+        "own GainSchedule)");
+  };
+  if (!(controller.law.k_rob == defaults.law.k_rob)) {
+    scheduled("law.k_rob", controller.law.k_rob, defaults.law.k_rob);
+  }
+  if (!(controller.feedforward.share == defaults.feedforward.share)) {
+    scheduled("feedforward.share", controller.feedforward.share, defaults.feedforward.share);
+  }
+}
+
+}  // namespace
+
 SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_ptr<const Path> path,
                                     const SteeringSystemOptions& options) {
   options.validate();
+  check_schedule_template(options.controller);
   car.validate();
   if (!path) throw std::invalid_argument("make_steering_system: path is null; a path is required");
   TuningOptions tuning;

@@ -14,6 +14,20 @@ bool non_negative(double value) noexcept {
   return std::isfinite(value) && value >= 0.0;
 }
 
+// Physical ranges of the body's roll, as ratios that hold from a model car to a truck. Measured
+// cars (Heydinger et al., "Measured Vehicle Inertial Parameters - NHTSA's Data Through November
+// 1998", SAE 1999-01-1336; the CommonRoad sets of vehicles/) have a roll radius of gyration
+// sqrt(I_xx / m) of 0.3-0.4 track widths, a roll frequency sqrt(K_phi / I_xx) / 2 pi of 1.5-3 Hz
+// (race cars up to about 5 Hz: Milliken and Milliken, Race Car Vehicle Dynamics, ch. 16) and a
+// roll damping ratio D_phi / (2 sqrt(K_phi I_xx)) of 0.2-0.7 (Gillespie, Fundamentals of Vehicle
+// Dynamics, ch. 5). The bounds leave a wide margin; beyond them the roll mode is so fast or so
+// stiff that the plant's integrator takes minutes per simulated second.
+constexpr double min_roll_gyration_per_track = 0.1;
+constexpr double max_roll_gyration_per_track = 1.0;
+constexpr double max_roll_frequency_hz = 10.0;
+constexpr double max_roll_damping_ratio = 5.0;
+constexpr double two_pi = 6.283185307179586;
+
 }  // namespace
 
 std::optional<Violation> DoubleTrackParameters::first_violation(const char* owner,
@@ -58,6 +72,35 @@ std::optional<Violation> DoubleTrackParameters::first_violation(const char* owne
   if (!(front_roll_damping_nmsprad + rear_roll_damping_nmsprad > 0.0)) {
     return bad("rear_roll_damping_nmsprad", rear_roll_damping_nmsprad,
                "must make the roll damping front + rear > 0 (an undamped roll mode)");
+  }
+  const double track = 0.5 * (front_track_m + rear_track_m);
+  const double gyration = std::sqrt(roll_inertia_kgm2 / mass_kg);
+  if (!(gyration >= min_roll_gyration_per_track * track &&
+        gyration <= max_roll_gyration_per_track * track)) {
+    return bad("roll_inertia_kgm2", roll_inertia_kgm2,
+               "gives a roll radius of gyration sqrt(I_xx / m) outside [0.1, 1] mean track "
+               "widths (cars: 0.3-0.4); sqrt(I_xx / m) [m] =",
+               gyration);
+  }
+  const double stiffness = roll_stiffness_nmprad();
+  const double frequency_hz = std::sqrt(stiffness / roll_inertia_kgm2) / two_pi;
+  if (!(frequency_hz <= max_roll_frequency_hz)) {
+    const bool front = front_roll_stiffness_nmprad > rear_roll_stiffness_nmprad;
+    return bad(front ? "front_roll_stiffness_nmprad" : "rear_roll_stiffness_nmprad",
+               front ? front_roll_stiffness_nmprad : rear_roll_stiffness_nmprad,
+               "gives a roll frequency sqrt((front + rear) / I_xx) / 2 pi above 10 Hz (cars: "
+               "1.5-3 Hz); frequency [Hz] =",
+               frequency_hz);
+  }
+  const double damping_ratio = (front_roll_damping_nmsprad + rear_roll_damping_nmsprad) /
+                               (2.0 * std::sqrt(stiffness * roll_inertia_kgm2));
+  if (!(damping_ratio <= max_roll_damping_ratio)) {
+    const bool front = front_roll_damping_nmsprad > rear_roll_damping_nmsprad;
+    return bad(front ? "front_roll_damping_nmsprad" : "rear_roll_damping_nmsprad",
+               front ? front_roll_damping_nmsprad : rear_roll_damping_nmsprad,
+               "gives a roll damping ratio (front + rear) / (2 sqrt(K_phi I_xx)) above 5 (cars: "
+               "0.2-0.7); ratio =",
+               damping_ratio);
   }
   if (!share(drive_share_front)) {
     return bad("drive_share_front", drive_share_front, "must be in [0, 1]");

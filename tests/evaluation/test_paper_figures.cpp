@@ -3,11 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "smoothsteer/evaluation/paper_figures.hpp"
+#include "support/hang_watchdog.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer {
@@ -47,6 +50,39 @@ TEST(PaperFigures, MalformedLinesNameTheFileAndLine) {
     }
   }
   EXPECT_THROW(PaperFigures::load(write_temporary("table,case\n")), std::runtime_error);
+}
+
+// `compare --paper-figures FILE` reads a regular file only, and at most
+// max_paper_figures_file_bytes of it: a FIFO blocked the reader and /dev/zero read 4.2 GB.
+TEST(PaperFigures, OnlyABoundedRegularFileIsRead) {
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / "smoothsteer_paper_figures_hostile";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  const std::string fifo = (directory / "fifo.csv").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string large = (directory / "large.csv").string();
+  {
+    std::ofstream output(large);
+    output << "table,case,quantity,value,source\n# "
+           << std::string(max_paper_figures_file_bytes, 'x') << "\n";
+  }
+  const testing::HangWatchdog watchdog("reading a FIFO or /dev/zero as paper figures");
+  for (const auto& [file, expected] :
+       {std::pair{fifo, std::string("not a regular file")},
+        std::pair{std::string("/dev/zero"), std::string("not a regular file")},
+        std::pair{directory.string(), std::string("is a directory")},
+        std::pair{large, std::string("is larger than 1048576")}}) {
+    try {
+      PaperFigures::load(file);
+      FAIL() << "expected an error for " << file;
+    } catch (const std::runtime_error& error) {
+      const std::string message = error.what();
+      EXPECT_EQ(message.rfind(file + ": paper figures file", 0), 0u) << message;
+      EXPECT_NE(message.find(expected), std::string::npos) << message;
+    }
+  }
+  std::filesystem::remove_all(directory);
 }
 
 }  // namespace

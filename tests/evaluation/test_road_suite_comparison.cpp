@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -69,6 +71,26 @@ TEST(RoadSuiteComparison, OptionsAreValidatedNamingTheField) {
   bad = small_case();
   bad.vehicle_files.clear();
   EXPECT_NE(message(bad).find("vehicle_files"), std::string::npos);
+}
+
+// A broken --vehicles file is named with its own error, not as a missing schedule.
+TEST(RoadSuiteComparison, ABrokenVehicleFileIsNamedWithItsError) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "smoothsteer_road_suite_broken_car.yaml";
+  std::ofstream(file) << "mass_kg: -5\n";
+  RoadSuiteOptions options = small_case();
+  options.vehicle_files.push_back(file.string());
+  try {
+    options.validate();
+    FAIL() << "a broken vehicle file was accepted";
+  } catch (const std::invalid_argument& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("vehicle_files (--vehicles) " + file.string()), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("mass_kg"), std::string::npos) << message;
+    EXPECT_EQ(message.find("schedule"), std::string::npos) << message;
+  }
+  std::filesystem::remove(file);
 }
 
 }  // namespace

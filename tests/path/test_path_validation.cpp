@@ -5,6 +5,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -161,6 +163,35 @@ TEST(PathValidation, WaypointsThatDoubleBackAreRefused) {
   EXPECT_NO_THROW(Path::from_waypoints({{0, 0}, {10, 0}, {10, 10}, {20, 10}}));           // 90 deg
   EXPECT_NO_THROW(Path::from_waypoints({{0, 0}, {10, 0}, {8, 10}}));                      // 101 deg
   EXPECT_THROW(Path::from_waypoints({{0, 0}, {10, 0}, {0, 10}}), std::invalid_argument);  // 135
+}
+
+// Turns close together double back as one sharp turn does: two of 90 degrees 1 um apart (or
+// three of 60 degrees) passed one at a time, and the car ended 9 m off. Turns 1 mm or more
+// apart, and turns that cancel (a zigzag), are separate turns.
+TEST(PathValidation, TurnsCloseTogetherThatDoubleBackAreRefused) {
+  const double um = 1e-6;
+  expect_message(
+      [&] {
+        Path::from_waypoints({{0, 0}, {10, 0}, {10, um}, {0, um}});
+      },
+      {"waypoints[1]", "doubles back", "within 1 mm"});
+  const double c = 0.5 * um, h = std::sqrt(3.0) / 2.0 * um;  // a 1 um hexagon's corner
+  EXPECT_EQ(Path::find_reversal({{0, 0}, {10, 0}, {10 + c, h}, {10, 2 * h}, {0, 2 * h}}),
+            std::optional<std::size_t>(1));
+  EXPECT_EQ(Path::find_reversal({{0, 0}, {10, 0}, {20, 0}, {20, um}, {10, um}}),
+            std::optional<std::size_t>(2));
+  // 2 mm apart: two turns of 90 degrees, each allowed.
+  EXPECT_EQ(Path::find_reversal({{0, 0}, {10, 0}, {10, 2e-3}, {0, 2e-3}}), std::nullopt);
+  // A zigzag of +-90 degrees 1 um apart turns back and forth, not round.
+  EXPECT_EQ(Path::find_reversal({{0, 0}, {10, 0}, {10, um}, {20, um}}), std::nullopt);
+  // Densely sampled: a U-turn of radius 1 m with 0.1 mm chords.
+  std::vector<Vec2> dense{{-10, -1}};
+  for (int i = 0; i <= 31416; ++i) {
+    const double angle = -std::numbers::pi / 2 + i * 1e-4;
+    dense.push_back({std::cos(angle), std::sin(angle)});
+  }
+  dense.push_back({-10, 1});
+  EXPECT_EQ(Path::find_reversal(dense), std::nullopt);
 }
 
 }  // namespace

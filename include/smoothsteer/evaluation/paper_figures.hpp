@@ -6,6 +6,7 @@
 //! File format: '#' comment lines, a header `table,case,quantity,value,source`, then one figure
 //! per line. `case` is the row key exactly as the table prints it (e.g. "10.0" for a speed).
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -14,12 +15,17 @@
 
 namespace smoothsteer {
 
+//! Largest paper figures file read [bytes]; the shipped one is about 1 kB.
+inline constexpr std::uintmax_t max_paper_figures_file_bytes = 1u << 20;
+
 class PaperFigures {
  public:
   //! No figures: tables leave the paper columns empty.
   PaperFigures() = default;
   //! Throws std::runtime_error "<file>: line L: <reason>" for a malformed file, a duplicate
-  //! figure or a non-numeric value, and "<file>: cannot open" if it cannot be read.
+  //! figure or a non-numeric value, and io::FileReadError "<file>: paper figures file ..." if it
+  //! cannot be read, is not a regular file (a FIFO, a device) or is larger than
+  //! max_paper_figures_file_bytes.
   static PaperFigures load(const std::string& file);
 
   std::optional<double> find(std::string_view table, std::string_view case_key,

@@ -28,7 +28,9 @@ VehicleParameters check_vehicle_mapping(const YAML::Node& vehicle, const std::st
                                         const std::set<std::string>& skipped = {});
 
 //! Reads and checks a vehicle file (ConfigError naming the file and the key; unknown keys
-//! rejected), as check_vehicle_mapping() on the file's root.
+//! rejected), as check_vehicle_mapping() on the file's root; an empty file or one whose root
+//! is not a mapping is refused ("<file>: expected a mapping of vehicle keys ..."), as the
+//! scenario loader refuses it.
 VehicleParameters load_vehicle_file(const std::string& yaml_path);
 
 }  // namespace smoothsteer::io

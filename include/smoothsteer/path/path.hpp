@@ -88,9 +88,15 @@ class Path {
   //! back: the spline runs into a cusp (0 -> 30 -> 0 on one line) where no forward path goes;
   //! a change of direction is a PathPlan with one piece per gear (docs/cusps.md).
   static constexpr double max_waypoint_turn_rad = 2.0 * std::numbers::pi / 3.0;
-  //! Index of the first waypoint at which the chords turn by more than max_waypoint_turn_rad
-  //! (from_waypoints refuses it), or none. Readers use it to name the row of a file.
-  static std::optional<std::size_t> find_reversal(const std::vector<Vec2>& waypoints) noexcept;
+  //! Turns of the chords closer together than this count as one turn [m]: two turns of 90
+  //! degrees 1 um apart double back as one of 180 degrees does. No vehicle turns by
+  //! max_waypoint_turn_rad within 1 mm (a radius below 0.5 mm).
+  static constexpr double max_waypoint_turn_spread_m = 1e-3;
+  //! Index of the first waypoint from which the chords turn by more than max_waypoint_turn_rad
+  //! in total, at it or together with the turns at the waypoints less than
+  //! max_waypoint_turn_spread_m after it (from_waypoints refuses it), or none. Readers use it to
+  //! name the row of a file. Linear in the number of waypoints.
+  static std::optional<std::size_t> find_reversal(const std::vector<Vec2>& waypoints);
   //! Builds from explicit segments (see PathBuilder); checks G1 continuity between consecutive
   //! segments (and end -> start if closed) within 1e-6 m and 1e-6 rad. The `s0` fields are
   //! recomputed; a cubic's `length` must match its coefficients.

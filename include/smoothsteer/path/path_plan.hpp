@@ -35,6 +35,10 @@ class PathPlan {
   //! From pieces built elsewhere (PathBuilder, Path::from_waypoints, ...). Needs >= 1 piece,
   //! non-null open paths, each starting within joint_tolerance_m of the previous end.
   static PathPlan from_pieces(std::vector<PathPiece> pieces);
+  //! Most gear changes of one plan: a parking manoeuvre has a handful, a shuttle route tens;
+  //! each costs a stop and a rest (cusp_rest_s), so 10 000 is hours of manoeuvring. More are
+  //! refused by from_pieces and by the scenario reader before it builds them.
+  static constexpr std::size_t max_cusps = 10'000;
   //! From waypoints with a direction column: directions[i] (+1 forward, -1 reverse) is the gear
   //! on the way from waypoints[i] to waypoints[i + 1] (the last entry is not used). A change of
   //! sign makes waypoints[i] a cusp: one piece ends and the next starts there. Each piece is a
