@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/status.hpp"
 
@@ -28,8 +29,7 @@ class ControllerError : public std::runtime_error {
 //! The first input of a control step outside ControllerInputRange, named with its value and
 //! bound ("speed_mps = 10000 is outside ControllerInputRange: magnitude <= 1000 m/s"); empty if
 //! every one is inside.
-std::string input_range_detail(const Vec2& rear_axle_position, double heading_rad, double speed_mps,
-                               double acceleration_mps2, double period_s);
+std::string input_range_detail(const ControllerInput& input);
 
 //! ConfigError, InfeasibleLimits and ControllerError as Python exceptions.
 void bind_errors(py::module_& m);

@@ -118,8 +118,7 @@ ControllerOutput update(SteeringController& controller, const py::object& positi
   ControllerOutput output;
   const Status status = controller.update(input, output);
   if (status != Status::ok) {
-    throw ControllerError(status, input_range_detail(input.rear_axle_position, heading_rad,
-                                                     speed_mps, acceleration_mps2, period_s));
+    throw ControllerError(status, input_range_detail(input));
   }
   return output;
 }
@@ -131,35 +130,16 @@ ControllerOutput update(SteeringController& controller, const py::object& positi
 
 }  // namespace
 
-std::string input_range_detail(const Vec2& rear_axle_position, double heading_rad, double speed_mps,
-                               double acceleration_mps2, double period_s) {
-  using R = ControllerInputRange;
-  const struct {
-    const char* name;
-    double value;
-    double bound;
-    const char* unit;
-  } checks[] = {
-      {"rear_axle_position.x", rear_axle_position.x, R::max_abs_coordinate_m, "m"},
-      {"rear_axle_position.y", rear_axle_position.y, R::max_abs_coordinate_m, "m"},
-      {"heading_rad", heading_rad, R::max_abs_heading_rad, "rad"},
-      {"speed_mps", speed_mps, R::max_abs_speed_mps, "m/s"},
-      {"acceleration_mps2", acceleration_mps2, R::max_abs_acceleration_mps2, "m/s^2"},
-  };
-  for (const auto& check : checks) {
-    if (!(std::abs(check.value) <= check.bound)) {
-      return std::string(check.name) + " = " +
-             py::str(py::float_(check.value)).cast<std::string>() +
-             " is outside ControllerInputRange (finite, magnitude <= " +
-             py::str(py::float_(check.bound)).cast<std::string>() + " " + check.unit + ")";
-    }
-  }
-  if (!(period_s > 0.0 && period_s <= R::max_period_s)) {
-    return "period_s = " + py::str(py::float_(period_s)).cast<std::string>() +
-           " is outside ControllerInputRange (in (0, " +
-           py::str(py::float_(R::max_period_s)).cast<std::string>() + "] s)";
-  }
-  return "";
+std::string input_range_detail(const ControllerInput& input) {
+  const std::optional<InputRangeViolation> bad = first_input_range_violation(input);
+  if (!bad) return "";
+  const auto text = [](double value) { return py::str(py::float_(value)).cast<std::string>(); };
+  const std::string range = bad->low == -bad->high
+                                ? "finite, magnitude <= " + text(bad->high)
+                                : std::string(bad->low_open ? "in (" : "in [") + text(bad->low) +
+                                      ", " + text(bad->high) + "]";
+  return std::string(bad->field) + " = " + text(bad->value) + " is outside ControllerInputRange (" +
+         range + " " + bad->unit + ")";
 }
 
 void bind_controller(py::module_& m) {

@@ -45,8 +45,11 @@ SteeringSystemOutput update(SteeringSystem& system, const py::object& position, 
   SteeringSystemOutput output;
   const Status status = system.update(input, output);
   if (status != Status::ok) {
-    throw ControllerError(status, input_range_detail(input.rear_axle_position, heading_rad,
-                                                     speed_mps, acceleration_mps2, period_s));
+    ControllerInput seen{input.rear_axle_position, heading_rad, speed_mps, acceleration_mps2,
+                         period_s};
+    seen.rear_axle_side_slip_rad = input.rear_axle_side_slip_rad.value_or(0.0);
+    seen.pose_age_s = pose_age_s;
+    throw ControllerError(status, input_range_detail(seen));
   }
   return output;
 }

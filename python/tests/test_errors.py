@@ -119,7 +119,7 @@ def test_a_vehicle_file_without_a_mapping_is_refused(tmp_path, text, got):
     (((0.0, 0.0), 0.0, 5.0, 0.0, -0.02), "period_s = -0.02"),
 ])
 def test_a_controller_error_names_the_bad_input(arguments, named):
-    """As the CLI's message does ("its input speed = ... is outside ControllerInputRange")."""
+    """As the CLI's message does ("its input speed_mps = ... is outside ControllerInputRange")."""
     controller = ss.LeadWheelController(ss.ControllerParameters(), ss.Path.circle((0, 0), 30.0))
     with pytest.raises(ss.ControllerError) as error:
         controller.update(*arguments)

@@ -18,7 +18,7 @@
 namespace smoothsteer {
 namespace {
 
-constexpr const char* certified = "certified";
+constexpr const char* certified = detail::certified_controller;
 
 struct Case {
   std::string road_file, vehicle_file, model, controller;
@@ -83,14 +83,7 @@ Outcome run_case(const Case& c, const std::string& trace_directory, std::size_t 
     }
   }
   const runner::Scenario scenario = runner::load_scenario(c.road_file, overrides);
-  runner::RunResult run;
-  if (c.controller == certified) {
-    run = runner::run_scenario(scenario);
-  } else {
-    auto controller =
-        make_comparison_controller(c.controller, detail::comparison_setup_for(scenario));
-    run = runner::run_scenario(scenario, *controller);
-  }
+  const runner::RunResult run = detail::run_with_controller(scenario, c.controller);
   Outcome o;
   o.road = scenario.name;
   o.car = stem(c.vehicle_file);

@@ -18,7 +18,7 @@
 namespace smoothsteer {
 namespace {
 
-constexpr const char* certified = "certified";
+constexpr const char* certified = detail::certified_controller;
 constexpr const char* nominal = "nominal";
 
 //! What the targets allow: max |e| <= factor x the nominal figure + margin (docs/results/
@@ -60,14 +60,7 @@ Outcome run_case(const Case& c) {
     for (const std::string& o : c.imperfection->overrides) overrides.push_back(o);
   }
   const runner::Scenario scenario = runner::load_scenario(file, overrides);
-  runner::RunResult run;
-  if (c.controller == certified) {
-    run = runner::run_scenario(scenario);
-  } else {
-    auto controller =
-        make_comparison_controller(c.controller, detail::comparison_setup_for(scenario));
-    run = runner::run_scenario(scenario, *controller);
-  }
+  const runner::RunResult run = detail::run_with_controller(scenario, c.controller);
   Outcome o;
   o.scenario = scenario.name;
   o.car = stem(c.vehicle_file);

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "smoothsteer/baselines/comparison_controllers.hpp"
 #include "smoothsteer/runner/scenario.hpp"
@@ -31,6 +32,18 @@ inline ComparisonSetup comparison_setup_for(const runner::Scenario& scenario) {
         3.0 / (2.0 * std::numbers::pi * scenario.actuator.bandwidth_hz);
   }
   return setup;
+}
+
+//! The name of a comparison's row for the scenario's own controller (its certified route).
+inline constexpr const char* certified_controller = "certified";
+
+//! Runs `scenario` with its own controller ("certified") or the named comparison controller, set
+//! up by comparison_setup_for().
+inline runner::RunResult run_with_controller(const runner::Scenario& scenario,
+                                             const std::string& controller) {
+  if (controller == certified_controller) return runner::run_scenario(scenario);
+  auto baseline = make_comparison_controller(controller, comparison_setup_for(scenario));
+  return runner::run_scenario(scenario, *baseline);
 }
 
 }  // namespace smoothsteer::detail

@@ -45,28 +45,15 @@ std::string text(double value) {
 
 //! "at t = T s: the controller returned S: <which input is out of range, and its bound>".
 std::string controller_error_detail(Status status, const ControllerInput& input, double t) {
-  using R = ControllerInputRange;
   std::string detail = "at t = " + text(t) + " s the controller returned " + to_string(status);
-  const struct {
-    const char* name;
-    double value;
-    double bound;
-    const char* unit;
-  } checks[] = {
-      {"rear axle x", input.rear_axle_position.x, R::max_abs_coordinate_m, "m"},
-      {"rear axle y", input.rear_axle_position.y, R::max_abs_coordinate_m, "m"},
-      {"heading", input.heading_rad, R::max_abs_heading_rad, "rad"},
-      {"speed", input.speed_mps, R::max_abs_speed_mps, "m/s"},
-      {"acceleration", input.acceleration_mps2, R::max_abs_acceleration_mps2, "m/s^2"},
-      {"rear-axle side slip", input.rear_axle_side_slip_rad, ControllerInput::max_side_slip_rad,
-       "rad"},
-  };
-  for (const auto& check : checks) {
-    if (!(std::abs(check.value) <= check.bound)) {
-      return detail + ": its input " + check.name + " = " + text(check.value) + " " + check.unit +
-             " is outside ControllerInputRange (magnitude <= " + text(check.bound) + " " +
-             check.unit + ")";
-    }
+  if (const std::optional<InputRangeViolation> bad = first_input_range_violation(input)) {
+    const std::string unit = std::string(" ") + bad->unit;
+    const std::string range = bad->low == -bad->high
+                                  ? "magnitude <= " + text(bad->high) + unit
+                                  : std::string(bad->low_open ? "in (" : "in [") + text(bad->low) +
+                                        ", " + text(bad->high) + "]" + unit;
+    return detail + ": its input " + bad->field + " = " + text(bad->value) + unit +
+           " is outside ControllerInputRange (" + range + ")";
   }
   if (status == Status::numerical_error) {
     return detail + ": a value inside the controller became non-finite";

@@ -19,8 +19,7 @@ ControllerParameters default_steering_system_controller() {
   p.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
   p.law.boundary_layer = 0.03;
   p.governor.enabled = true;
-  p.disturbance_estimation = {.enabled = true,
-                              .length_m = DisturbanceEstimation::car_length_m};
+  p.disturbance_estimation = {.enabled = true, .length_m = DisturbanceEstimation::car_length_m};
   return p;
 }
 

@@ -60,7 +60,7 @@ class Cli : public ::testing::Test {
   fs::path directory_;
 };
 
-// Defect 1: --out is an argument of the plotter, never shell text.
+// --out is an argument of the plotter, never shell text.
 TEST_F(Cli, PlotPassesTheOutputDirectoryWithoutAShell) {
   const std::string fake = write("fake_plot.py",
                                  "import sys\n"
@@ -76,7 +76,7 @@ TEST_F(Cli, PlotPassesTheOutputDirectoryWithoutAShell) {
   EXPECT_TRUE(fs::exists(directory_ / hostile / "trace.csv"));
 }
 
-// Defect 1: the script is found relative to the binary/source tree from any directory.
+// The script is found relative to the binary/source tree from any directory.
 TEST_F(Cli, PlotWorksFromAnyWorkingDirectory) {
   if (run_process({"/usr/bin/python3", "-c", "import matplotlib"}, directory_).exit_code != 0) {
     GTEST_SKIP() << "python3-matplotlib is not installed";
@@ -88,7 +88,7 @@ TEST_F(Cli, PlotWorksFromAnyWorkingDirectory) {
   EXPECT_TRUE(fs::exists(directory_ / "plotted" / "trace.png")) << run.out << run.err;
 }
 
-// Parse errors and --version (defect 8, CLI polish): exit codes 1 and 0, not CLI11's.
+// Parse errors and --version: exit codes 1 and 0, not CLI11's.
 TEST_F(Cli, ParseErrorsExitOneAndVersionPrints) {
   EXPECT_EQ(cli({"run"}).exit_code, 1);
   EXPECT_EQ(cli({"--no-such-option"}).exit_code, 1);
@@ -100,7 +100,7 @@ TEST_F(Cli, ParseErrorsExitOneAndVersionPrints) {
   EXPECT_EQ(cli({"--help"}).exit_code, 0);
 }
 
-// Defect 8: a baseline's set-up rule (ComparisonSetup) and gains name the scenario and the key.
+// A baseline's set-up rule (ComparisonSetup) and gains name the scenario and the key.
 TEST_F(Cli, BaselineErrorsNameTheScenarioAndTheKey) {
   const std::string file = scenario("lane_change_15.yaml");
   const ProcessResult setup =
@@ -127,7 +127,7 @@ TEST_F(Cli, DemoHelpWritesNoTraceFile) {
   EXPECT_FALSE(fs::exists(directory_ / "--help"));
 }
 
-// Defect 5: an output that exists and is not a regular file is refused, not renamed over.
+// An output that exists and is not a regular file is refused, not renamed over.
 TEST_F(Cli, OutputsThatAreNotRegularFilesAreRefused) {
   const fs::path fifo = directory_ / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
@@ -148,7 +148,7 @@ TEST_F(Cli, OutputsThatAreNotRegularFilesAreRefused) {
   EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
-// Defect 4: a run's outputs appear together or not at all.
+// A run's outputs appear together or not at all.
 TEST_F(Cli, FailedRunLeavesThePreviousOutputsWhole) {
   ASSERT_EQ(cli({"run", scenario("lane_change_10.yaml"), "--out", "out", "--set",
                  "simulation.duration_s=1"})
@@ -205,7 +205,7 @@ TEST_F(Cli, OutputDirectoryWithOtherFilesIsRefused) {
   EXPECT_EQ(read_text(directory_ / "mine/thesis.tex"), "precious");
 }
 
-// Defects 3 and 7: counts the input controls are capped before anything is built.
+// Counts the input controls are capped before anything is built.
 TEST_F(Cli, HugeCountsAreRefusedWithTheOption) {
   const ProcessResult speeds =
       cli({"tune", "--vehicle", (source_dir() / "vehicles/passenger_car.yaml").string(), "--speeds",
@@ -223,7 +223,7 @@ TEST_F(Cli, HugeCountsAreRefusedWithTheOption) {
   EXPECT_FALSE(fs::exists(directory_ / "t.csv"));
 }
 
-// Defect 8: a sweep whose every row fails is an error.
+// A sweep whose every row fails is an error.
 // The paper's Sec. IV-A study runs on the shipped circle_sections_paper.yaml, as the README and
 // docs/cli.md show it: the four variations and the parameter table, every run ok.
 TEST_F(Cli, PaperVariationsRunOnTheShippedPaperScenario) {
@@ -276,7 +276,7 @@ TEST_F(Cli, ControllerErrorsSayWhenAndWhy) {
       cli({"run", scenario("lane_change_10.yaml"), "--out", "o", "--set", "start.y_m=1e9", "--set",
            "start.heading_rad=1.5", "--set", "simulation.duration_s=1"});
   EXPECT_EQ(run.exit_code, 1);
-  for (const char* part : {"controller_error", "at t = ", "invalid_input", "rear axle y",
+  for (const char* part : {"controller_error", "at t = ", "invalid_input", "rear_axle_position.y",
                            "ControllerInputRange", "1e+09"}) {
     EXPECT_NE(run.err.find(part), std::string::npos) << part << " missing in " << run.err;
   }

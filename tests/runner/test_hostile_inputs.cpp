@@ -116,7 +116,7 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
   fs::create_directories(directory_ / "a_directory");
   const std::string s = valid;
   const std::vector<BadInput> table{
-      // Defect 2: magnitudes that break the arithmetic.
+      // Magnitudes that break the arithmetic.
       {"start 1e155 m away",
        s,
        {"start.x_m=1e155"},
@@ -131,7 +131,7 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
        {},
        {"pts_huge.csv", "line 3", "magnitude"}},
       {"overflowing number", s, {"start.y_m=1e999"}, {"'start.y_m'", "expected a number"}},
-      // Defect 3: counts the input controls.
+      // Counts the input controls.
       {"lane change from 1e17",
        "path: {type: lane_change}\ncontroller: {type: lead_wheel}\n",
        {"path.x_start_m=-1e8", "path.x_end_m=1e8", "path.spacing_m=0.05"},
@@ -176,7 +176,7 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
        {"simulation.substep_s=1e-6", "simulation.control_period_s=1e-5",
         "simulation.duration_s=3600"},
        {"FILE", "'simulation'", "duration_s", "control steps", "1e+07"}},
-      // Defect 6: silent acceptance.
+      // Silent acceptance.
       {"duplicate key",
        s + "name: again\n",
        {},
@@ -218,13 +218,13 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
        s,
        {"controller.surface=7"},
        {"'controller.surface'", "'7'", "must be one of"}},
-      // Defect 4: text must be UTF-8.
+      // Text must be UTF-8.
       {"non-UTF-8 description",
        s + "description: caf\xe9\n",
        {},
        {"FILE", "not valid UTF-8", "line 5"}},
       {"non-UTF-8 --set", s, {"name=caf\xe9"}, {"override", "not valid UTF-8"}},
-      // Defect 8: messages that named nothing.
+      // Messages that named nothing.
       {"non-string vehicle.file",
        s + "vehicle: {file: [1, 2]}\n",
        {},

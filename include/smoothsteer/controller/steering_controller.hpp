@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/status.hpp"
@@ -79,18 +80,47 @@ struct ControllerInputRange {
   static constexpr double max_period_s = 1e3;  //!< period in (0, max_period_s]
 };
 
+//! The first field of an input outside ControllerInputRange: its name in ControllerInput, its
+//! value, and the range as [low, high] (low = -high for a magnitude; low_open: low excluded).
+struct InputRangeViolation {
+  const char* field = "";
+  double value = 0.0;
+  double low = 0.0;
+  double high = 0.0;
+  bool low_open = false;
+  const char* unit = "";
+};
+
+//! The first field outside ControllerInputRange (NaN and inf included), or none: the one table
+//! that update() checks and that error messages name.
+inline std::optional<InputRangeViolation> first_input_range_violation(
+    const ControllerInput& input) noexcept {
+  using R = ControllerInputRange;
+  const InputRangeViolation checks[] = {
+      {"rear_axle_position.x", input.rear_axle_position.x, -R::max_abs_coordinate_m,
+       R::max_abs_coordinate_m, false, "m"},
+      {"rear_axle_position.y", input.rear_axle_position.y, -R::max_abs_coordinate_m,
+       R::max_abs_coordinate_m, false, "m"},
+      {"heading_rad", input.heading_rad, -R::max_abs_heading_rad, R::max_abs_heading_rad, false,
+       "rad"},
+      {"speed_mps", input.speed_mps, -R::max_abs_speed_mps, R::max_abs_speed_mps, false, "m/s"},
+      {"acceleration_mps2", input.acceleration_mps2, -R::max_abs_acceleration_mps2,
+       R::max_abs_acceleration_mps2, false, "m/s^2"},
+      {"period_s", input.period_s, 0.0, R::max_period_s, true, "s"},
+      {"rear_axle_side_slip_rad", input.rear_axle_side_slip_rad,
+       -ControllerInput::max_side_slip_rad, ControllerInput::max_side_slip_rad, false, "rad"},
+      {"pose_age_s", input.pose_age_s, 0.0, ControllerInput::max_pose_age_s, false, "s"},
+  };
+  for (const InputRangeViolation& check : checks) {
+    const bool above_low = check.low_open ? check.value > check.low : check.value >= check.low;
+    if (!(above_low && check.value <= check.high)) return check;  // NaN: not within
+  }
+  return std::nullopt;
+}
+
 //! True if every value of `input` is finite and within ControllerInputRange.
 inline bool input_in_range(const ControllerInput& input) noexcept {
-  using R = ControllerInputRange;
-  auto within = [](double value, double bound) { return std::abs(value) <= bound; };  // NaN: no
-  return within(input.rear_axle_position.x, R::max_abs_coordinate_m) &&
-         within(input.rear_axle_position.y, R::max_abs_coordinate_m) &&
-         within(input.heading_rad, R::max_abs_heading_rad) &&
-         within(input.speed_mps, R::max_abs_speed_mps) &&
-         within(input.acceleration_mps2, R::max_abs_acceleration_mps2) && input.period_s > 0.0 &&
-         input.period_s <= R::max_period_s && input.pose_age_s >= 0.0 &&
-         input.pose_age_s <= ControllerInput::max_pose_age_s &&
-         within(input.rear_axle_side_slip_rad, ControllerInput::max_side_slip_rad);
+  return !first_input_range_violation(input);
 }
 
 //! A measured steering angle that reset() accepts: |angle| <= limit_rad (the vehicle's angle
