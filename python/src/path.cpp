@@ -80,11 +80,15 @@ void bind_path(py::module_& m) {
                                           "Arc length s [m] starts at 0; e is positive left.")
       .def_static(
           "from_waypoints",
-          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& xy) {
-            return std::make_shared<Path>(Path::from_waypoints(waypoints_from(xy)));
+          [](const py::array_t<double, py::array::c_style | py::array::forcecast>& xy,
+             double smoothing_tolerance_m) {
+            return std::make_shared<Path>(
+                Path::from_waypoints(waypoints_from(xy), WaypointSmoothing{smoothing_tolerance_m}));
           },
-          py::arg("waypoints"),
-          "C2 natural cubic spline through an N x 2 array of waypoints x, y [m].")
+          py::arg("waypoints"), py::arg("smoothing_tolerance_m") = 0.0,
+          "C2 natural cubic spline through an N x 2 array of waypoints x, y [m]; with "
+          "smoothing_tolerance_m > 0 the smoothest C2 spline whose knots stay that RMS distance "
+          "[m] from the waypoints (noisy planner samples or recordings).")
       .def_static(
           "circle",
           [](const py::object& center, double radius_m, bool counter_clockwise,

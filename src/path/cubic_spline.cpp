@@ -13,6 +13,23 @@
 
 namespace smoothsteer::detail {
 
+std::vector<PathSegment> cubic_segments_from_moments(const std::vector<Vec2>& knot_points,
+                                                     const std::vector<Vec2>& moments,
+                                                     const std::vector<double>& knot_spacing) {
+  std::vector<PathSegment> segments;
+  segments.reserve(knot_spacing.size());
+  for (std::size_t i = 0; i < knot_spacing.size(); ++i) {
+    const double step = knot_spacing[i];
+    const Vec2 a = knot_points[i];
+    const Vec2 b = (1.0 / step) * (knot_points[i + 1] - knot_points[i]) -
+                   (step / 6.0) * (2.0 * moments[i] + moments[i + 1]);
+    const Vec2 c = 0.5 * moments[i];
+    const Vec2 d = (1.0 / (6.0 * step)) * (moments[i + 1] - moments[i]);
+    segments.push_back(PathSegment::make_cubic({a.x, b.x, c.x, d.x}, {a.y, b.y, c.y, d.y}, step));
+  }
+  return segments;
+}
+
 std::vector<PathSegment> natural_cubic_spline(const std::vector<Vec2>& waypoints) {
   const std::size_t n = waypoints.size() - 1;  // number of segments, >= 2
   std::vector<double> h(n);
@@ -32,18 +49,7 @@ std::vector<PathSegment> natural_cubic_spline(const std::vector<Vec2>& waypoints
   }
   for (std::size_t i = n - 1; i >= 1; --i) moments[i] = rhs[i] - upper[i] * moments[i + 1];
 
-  std::vector<PathSegment> segments;
-  segments.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double step = h[i];
-    const Vec2 a = waypoints[i];
-    const Vec2 b = (1.0 / step) * (waypoints[i + 1] - waypoints[i]) -
-                   (step / 6.0) * (2.0 * moments[i] + moments[i + 1]);
-    const Vec2 c = 0.5 * moments[i];
-    const Vec2 d = (1.0 / (6.0 * step)) * (moments[i + 1] - moments[i]);
-    segments.push_back(PathSegment::make_cubic({a.x, b.x, c.x, d.x}, {a.y, b.y, c.y, d.y}, step));
-  }
-  return segments;
+  return cubic_segments_from_moments(waypoints, moments, h);
 }
 
 }  // namespace smoothsteer::detail

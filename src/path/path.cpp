@@ -161,8 +161,11 @@ Path Path::circle(Vec2 center, double radius_m, bool counter_clockwise, double s
                   true);
 }
 
-Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
-  constexpr const char* where = "Path::from_waypoints";
+namespace {
+
+//! The interpolating overload's checks: finite, >= 2 points, no consecutive duplicates, no
+//! reversal (each named by index).
+void validate_waypoints(const char* where, const std::vector<Vec2>& waypoints) {
   for (std::size_t i = 0; i < waypoints.size(); ++i) {
     require_coordinate(where, "waypoints[" + std::to_string(i) + "].x", waypoints[i].x);
     require_coordinate(where, "waypoints[" + std::to_string(i) + "].y", waypoints[i].y);
@@ -180,7 +183,7 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
            " m apart; consecutive waypoints must be >= 1e-09 m apart");
     }
   }
-  if (const std::optional<std::size_t> turn = find_reversal(waypoints)) {
+  if (const std::optional<std::size_t> turn = Path::find_reversal(waypoints)) {
     const Vec2 before = waypoints[*turn] - waypoints[*turn - 1];
     const Vec2 after = waypoints[*turn + 1] - waypoints[*turn];
     const double angle = std::abs(std::atan2(cross(before, after), dot(before, after)));
@@ -190,12 +193,52 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
          "pi / 3): it doubles back on itself; a change of direction needs one path per "
          "direction (PathPlan, docs/cusps.md)");
   }
-  if (waypoints.size() == 2) {
-    const Vec2 chord = waypoints[1] - waypoints[0];
-    return assemble(
-        {PathSegment::make_line(waypoints[0], std::atan2(chord.y, chord.x), norm(chord))}, false);
-  }
+}
+
+//! The path through exactly two waypoints.
+PathSegment chord_line(const std::vector<Vec2>& waypoints) {
+  const Vec2 chord = waypoints[1] - waypoints[0];
+  return PathSegment::make_line(waypoints[0], std::atan2(chord.y, chord.x), norm(chord));
+}
+
+}  // namespace
+
+Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
+  validate_waypoints("Path::from_waypoints", waypoints);
+  if (waypoints.size() == 2) return assemble({chord_line(waypoints)}, false);
   return assemble(detail::natural_cubic_spline(waypoints), false);
+}
+
+Path Path::from_waypoints(const std::vector<Vec2>& waypoints, WaypointSmoothing smoothing) {
+  constexpr const char* where = "Path::from_waypoints";
+  validate_waypoints(where, waypoints);
+  const double tolerance = smoothing.tolerance_m;
+  if (!std::isfinite(tolerance) || !(tolerance >= 0.0) || !(tolerance <= max_extent_m)) {
+    fail(std::string(where) + ": smoothing.tolerance_m = " + detail::format_number(tolerance) +
+         " must be finite and in [0, 1e9] m");
+  }
+  if (waypoints.size() == 2) return assemble({chord_line(waypoints)}, false);
+  if (tolerance == 0.0) return assemble(detail::natural_cubic_spline(waypoints), false);
+  std::vector<PathSegment> segments = detail::smoothing_cubic_spline(waypoints, tolerance);
+  // Heavy smoothing of a sharp turn can fold the fit back on itself: refuse it by index.
+  std::vector<Vec2> knots;
+  knots.reserve(segments.size() + 1);
+  for (const PathSegment& segment : segments) knots.push_back(segment.start);
+  knots.push_back(segments.back().evaluate_parameter(segments.back().t_end).position);
+  for (std::size_t i = 1; i < knots.size(); ++i) {
+    if (!(norm(knots[i] - knots[i - 1]) >= kDuplicateDistance_m) ||
+        !(segments[i - 1].length >= kDuplicateDistance_m)) {
+      fail(std::string(where) + ": smoothing.tolerance_m = " + detail::format_number(tolerance) +
+           " collapses the fit between waypoints[" + std::to_string(i - 1) + "] and [" +
+           std::to_string(i) + "]; use a smaller tolerance");
+    }
+  }
+  if (const std::optional<std::size_t> turn = find_reversal(knots)) {
+    fail(std::string(where) + ": smoothing.tolerance_m = " + detail::format_number(tolerance) +
+         " folds the fitted path back on itself at waypoints[" + std::to_string(*turn) +
+         "]; use a smaller tolerance");
+  }
+  return assemble(std::move(segments), false);
 }
 
 Path Path::from_segments(std::vector<PathSegment> segments, bool closed) {

@@ -16,6 +16,19 @@ std::string format_number(double value);
 //! chord-length parametrized; one cubic segment per pair of consecutive waypoints.
 std::vector<PathSegment> natural_cubic_spline(const std::vector<Vec2>& waypoints);
 
+//! Smoothing cubic spline (Reinsch) through >= 3 validated waypoints: the natural cubic spline
+//! with knots at their chord-length parameters that is closest to them in the RMS sense
+//! allowed by `tolerance_m` (> 0) with the least integral of squared second derivative.
+std::vector<PathSegment> smoothing_cubic_spline(const std::vector<Vec2>& waypoints,
+                                                double tolerance_m);
+
+//! One cubic segment per knot interval of the cubic spline with the given knot points, second
+//! derivatives (moments) at the knots and knot spacing (knot_points.size() = moments.size() =
+//! knot_spacing.size() + 1).
+std::vector<PathSegment> cubic_segments_from_moments(const std::vector<Vec2>& knot_points,
+                                                     const std::vector<Vec2>& moments,
+                                                     const std::vector<double>& knot_spacing);
+
 // Cubic segment internals (cubic_segment.cpp), called by PathSegment's dispatchers.
 PathPoint cubic_point(const PathSegment& segment, double t) noexcept;
 double cubic_arc_length(const PathSegment& segment, double t) noexcept;

@@ -67,6 +67,13 @@ void add_clothoid(ConfigSection& piece, PathBuilder& builder) {
   builder.clothoid(length, end);
 }
 
+//! `smoothing_tolerance_m` of a waypoints path: the RMS distance [m] a smoothing spline keeps
+//! from noisy waypoints (Path::from_waypoints); absent or 0 interpolates them.
+WaypointSmoothing smoothing(ConfigSection& c) {
+  if (!c.has("smoothing_tolerance_m")) return {};
+  return WaypointSmoothing{c.number("smoothing_tolerance_m", 0.0, {0.0, 10.0})};
+}
+
 }  // namespace
 
 std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_directory,
@@ -194,7 +201,7 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
                              "needs one path per direction (docs/cusps.md)");
       }
       c.store("points", resolved);
-      return std::make_shared<const Path>(Path::from_waypoints(points));
+      return std::make_shared<const Path>(Path::from_waypoints(points, smoothing(c)));
     }
     // waypoints_csv
     std::string csv = c.required_text("file");
@@ -206,7 +213,7 @@ std::shared_ptr<const Path> make_path(ConfigSection& c, const std::string& base_
     } catch (const ConfigError& error) {
       c.fail("file", error.what());  // names the key that gave the file
     }
-    return std::make_shared<const Path>(Path::from_waypoints(points));
+    return std::make_shared<const Path>(Path::from_waypoints(points, smoothing(c)));
   } catch (const std::invalid_argument& error) {
     throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error.what());
   }

@@ -139,6 +139,14 @@ TEST_F(ScenarioErrors, BadOverridesAndWaypointFiles) {
   expect_contains(error_of(csv), {"pts.csv", "line 3", "two finite numbers"});
   const std::string missing = write("m.yaml", "path: {type: waypoints_csv, file: none.csv}\n");
   expect_contains(error_of(missing), {"none.csv", "cannot open"});
+  write("good.csv", "x,y\n0,0\n10,0.01\n20,-0.01\n30,0\n");
+  const std::string smoothed =
+      write("s.yaml",
+            "path: {type: waypoints_csv, file: good.csv, smoothing_tolerance_m: 0.01}\n"
+            "controller: {type: lead_wheel}\n");
+  EXPECT_EQ(error_of(smoothed), "");
+  expect_contains(error_of(smoothed, {"path.smoothing_tolerance_m=-1"}),
+                  {"'path.smoothing_tolerance_m'", "-1", "out of range"});
   const std::string vehicle =
       write("v.yaml", "vehicle: {file: missing_car.yaml}\npath: {type: straight}\n");
   expect_contains(error_of(vehicle), {"missing_car.yaml", "cannot open"});

@@ -51,6 +51,15 @@ struct ProjectionHint {
   void reset() noexcept { segment_index = none; }
 };
 
+//! How Path::from_waypoints fits waypoints that carry noise (a planner's samples, a recording).
+struct WaypointSmoothing {
+  //! RMS distance of the fitted path from the waypoints at their knots [m] (Reinsch's
+  //! criterion): the smoothest C2 cubic spline that stays this close. 0 interpolates exactly.
+  //! For Gaussian jitter of standard deviation sigma on each coordinate, sigma sqrt(2) is the
+  //! jitter's own RMS distance. Larger than the least-squares line's residual gives that line.
+  double tolerance_m = 0.0;
+};
+
 class Path {
  public:
   //! Options for the projection search.
@@ -84,6 +93,11 @@ class Path {
   //! curvature are continuous. Needs >= 2 points; consecutive duplicates and a turn sharper
   //! than max_waypoint_turn_rad (find_reversal) are rejected by index.
   static Path from_waypoints(const std::vector<Vec2>& waypoints);
+  //! A C2 smoothing cubic spline near the waypoints (src/path/smoothing_spline.cpp): its
+  //! curvature and curvature rate come from the fit, not from the noise between the points.
+  //! Same checks as the interpolating overload, plus a finite tolerance in [0, 1e9] m; refused
+  //! by index if the fitted path doubles back. Set-up time only: O(n) per bisection step.
+  static Path from_waypoints(const std::vector<Vec2>& waypoints, WaypointSmoothing smoothing);
   //! Sharpest turn from one chord of from_waypoints to the next [rad]. A sharper one doubles
   //! back: the spline runs into a cusp (0 -> 30 -> 0 on one line) where no forward path goes;
   //! a change of direction is a PathPlan with one piece per gear (docs/cusps.md).

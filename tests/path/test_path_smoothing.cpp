@@ -1,0 +1,142 @@
+// Smoothing splines through noisy waypoints (Path::from_waypoints with a WaypointSmoothing):
+// tolerance 0 is the interpolating spline, the fit keeps Reinsch's distance to the waypoints,
+// and on jittered samples of a known curve its curvature is far closer to the curve's than the
+// interpolating spline's, whose curvature reads the jitter.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/path/path.hpp"
+#include "support/property.hpp"
+
+namespace smoothsteer {
+namespace {
+
+TEST(PathSmoothing, ZeroToleranceIsTheInterpolatingSpline) {
+  const std::vector<Vec2> waypoints{{0, 0}, {3, 1}, {5, 4}, {4, 8}, {7, 9}, {12, 9.5}};
+  const Path interpolating = Path::from_waypoints(waypoints);
+  const Path smoothed = Path::from_waypoints(waypoints, WaypointSmoothing{0.0});
+  ASSERT_EQ(interpolating.segment_count(), smoothed.segment_count());
+  EXPECT_EQ(interpolating.length(), smoothed.length());
+  for (double s = 0.0; s <= interpolating.length(); s += 0.25) {
+    const PathPoint a = interpolating.evaluate(s), b = smoothed.evaluate(s);
+    EXPECT_EQ(a.position.x, b.position.x) << "s = " << s;
+    EXPECT_EQ(a.position.y, b.position.y) << "s = " << s;
+    EXPECT_EQ(a.curvature, b.curvature) << "s = " << s;
+  }
+}
+
+TEST(PathSmoothing, RejectsABadToleranceNamingTheField) {
+  const std::vector<Vec2> waypoints{{0, 0}, {1, 0}, {2, 0.1}};
+  for (const double tolerance : {-0.1, std::numeric_limits<double>::quiet_NaN(),
+                                 std::numeric_limits<double>::infinity(), 1e12}) {
+    try {
+      (void)Path::from_waypoints(waypoints, WaypointSmoothing{tolerance});
+      ADD_FAILURE() << "accepted tolerance " << tolerance;
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("smoothing.tolerance_m"), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
+//! Curvature error against the true curvature over the middle of the path (the natural ends
+//! force zero curvature, at both fits alike), the RMS over samples every 0.5 m.
+template <class TrueCurvature>
+double rms_curvature_error(const Path& path, TrueCurvature true_curvature) {
+  double sum = 0.0;
+  int count = 0;
+  for (double s = 0.2 * path.length(); s <= 0.8 * path.length(); s += 0.5) {
+    const PathPoint point = path.evaluate(s);
+    const double error = point.curvature - true_curvature(point.position);
+    sum += error * error;
+    ++count;
+  }
+  return std::sqrt(sum / count);
+}
+
+// Jittered samples (Gaussian, sigma 2-20 mm per coordinate, 1 m apart as a planner's window
+// delivers them) of a random circle arc of radius 20-500 m, smoothed with Reinsch's tolerance
+// sigma sqrt(2): the knots sit that close to the samples, the fitted path stays within a few
+// sigma of the true circle, and its curvature error is a small fraction of the interpolating
+// spline's.
+TEST(PathSmoothing, JitteredArcKeepsTheCurvatureOfTheArc) {
+  const int cases = testing::property_cases(40);
+  double worst_ratio = 0.0, worst_interior = 0.0, worst_end = 0.0;
+  for (int i = 0; i < cases; ++i) {
+    const std::uint64_t seed = testing::case_seed(i);
+    testing::Random random(seed + 38);
+    const double radius = std::pow(10.0, random.uniform(std::log10(20.0), std::log10(500.0)));
+    const double sigma = random.uniform(0.002, 0.02);
+    const double length = random.uniform(60.0, 120.0);
+    std::normal_distribution<double> jitter(0.0, sigma);
+    std::vector<Vec2> samples;
+    for (double s = 0.0; s <= length; s += 1.0) {
+      const double angle = s / radius;
+      const Vec2 on_circle{radius * std::sin(angle), radius * (1.0 - std::cos(angle))};
+      samples.push_back(on_circle + Vec2{jitter(random.engine()), jitter(random.engine())});
+    }
+    const std::string context = testing::seed_message(seed) + "; radius " + std::to_string(radius) +
+                                " m, sigma " + std::to_string(sigma) + " m, length " +
+                                std::to_string(length) + " m";
+    const double tolerance = sigma * std::sqrt(2.0);
+    const Path interpolating = Path::from_waypoints(samples);
+    const Path smoothed = Path::from_waypoints(samples, WaypointSmoothing{tolerance});
+    // Reinsch's criterion: the RMS distance of the knots from the samples is the tolerance.
+    const auto& segments = smoothed.segments();
+    ASSERT_EQ(segments.size(), samples.size() - 1) << context;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      const double s = k < segments.size() ? segments[k].s0 : smoothed.length();
+      const Vec2 d = smoothed.evaluate(s).position - samples[k];
+      sum += d.x * d.x + d.y * d.y;
+    }
+    EXPECT_NEAR(std::sqrt(sum / static_cast<double>(samples.size())), tolerance, 0.02 * tolerance)
+        << context;
+    // Within a few sigma of the true circle; the ends less so: a natural spline ends straight,
+    // and an end knot is averaged with neighbours on one side only. A planner's window starts
+    // 5 m behind the car, so the car drives the interior.
+    const Vec2 centre{0.0, radius};
+    for (double s = 0.0; s <= smoothed.length(); s += 0.5) {
+      const bool interior = s >= 5.0 && s <= smoothed.length() - 5.0;
+      const double distance = std::abs(norm(smoothed.evaluate(s).position - centre) - radius);
+      EXPECT_LE(distance, (interior ? 5.0 : 15.0) * sigma) << context << ", s = " << s;
+      (interior ? worst_interior : worst_end) =
+          std::max(interior ? worst_interior : worst_end, distance / sigma);
+    }
+    const auto on_arc = [&](Vec2) { return 1.0 / radius; };
+    const double smoothed_error = rms_curvature_error(smoothed, on_arc);
+    const double interpolated_error = rms_curvature_error(interpolating, on_arc);
+    EXPECT_LE(smoothed_error, 0.25 * interpolated_error) << context;
+    worst_ratio = std::max(worst_ratio, smoothed_error / interpolated_error);
+  }
+  std::printf(
+      "worst smoothed / interpolated curvature error: %.3f; worst distance from the arc: "
+      "%.2f sigma inside, %.2f sigma within 5 m of an end\n",
+      worst_ratio, worst_interior, worst_end);
+}
+
+// A fit's tolerance beyond the least-squares line's residual gives that line: samples of a
+// straight line with jitter, smoothed with a large tolerance, give curvature ~ 0 everywhere.
+TEST(PathSmoothing, LargeToleranceOnALineGivesTheLine) {
+  std::mt19937_64 engine(7);
+  std::normal_distribution<double> jitter(0.0, 0.01);
+  std::vector<Vec2> samples;
+  for (int k = 0; k <= 50; ++k) samples.push_back({static_cast<double>(k), jitter(engine)});
+  const Path smoothed = Path::from_waypoints(samples, WaypointSmoothing{1.0});
+  for (double s = 0.0; s <= smoothed.length(); s += 0.5) {
+    EXPECT_LE(std::abs(smoothed.evaluate(s).curvature), 1e-4) << "s = " << s;
+  }
+}
+
+}  // namespace
+}  // namespace smoothsteer
