@@ -5,7 +5,8 @@
 * every figure of "How it compares" is the committed table's value at the README's precision:
   the comparison table against docs/results/tuning_rule.md (max_abs_e_m, circle_sections
   rms_e_m, "diverges" where the table says diverged), the reaching ratios against
-  docs/results/roc_vx.md.
+  docs/results/roc_vx.md, the road-suite totals against road_suite_summary.md and the
+  robustness totals against robustness_summary.md.
 
 Usage: check_readme.py [source_dir]"""
 import re
@@ -116,6 +117,15 @@ def check_comparison(readme, root, errors):
             errors.append(f"README.md: the road-suite figures of {controller} do not match "
                           f"road_suite_summary.md")
         checked += 2
+    robustness = (root / "docs/results/robustness_summary.md").read_text()
+    totals = re.search(r"Over the (\d+) cases: (\d+) within 1.2x \+ 2 cm, (\d+) at most the best",
+                       robustness)
+    match = re.search(r"at most the best baseline's max \|e\| in (\d+) of (\d+) cases and\s+"
+                      r"within 1.2x its nominal figure \+ 2 cm in (\d+)", compares)
+    if not totals or not match or (match.group(2), match.group(3), match.group(1)) != \
+            totals.groups():
+        errors.append("README.md: the robustness totals do not match robustness_summary.md")
+    checked += 3
     return checked
 
 
