@@ -20,6 +20,7 @@ from ._smoothsteer import (  # noqa: F401
     ChainParameters,
     DelayCompensation,
     DisturbanceEstimation,
+    DrivingDomain,
     FeedforwardParameters,
     FrictionGuard,
     SingleTrackInversion,

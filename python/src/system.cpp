@@ -203,6 +203,8 @@ void bind_outputs(py::module_& m) {
   limits.attr("friction_guard") = static_cast<int>(limit_friction_guard);
   limits.attr("switching_bound") = static_cast<int>(limit_switching_bound);
   limits.attr("steering_angle") = static_cast<int>(limit_steering_angle);
+  limits.attr("path_beyond_domain") = static_cast<int>(limit_path_beyond_domain);
+  limits.attr("beyond_certified_speed") = static_cast<int>(limit_beyond_certified_speed);
 }
 
 }  // namespace
@@ -215,11 +217,34 @@ void bind_system(py::module_& m) {
       .value("sensor", SlipInput::sensor, "rear_axle_side_slip_rad of update()")
       .value("observer", SlipInput::observer, "SideSlipObserver (default)");
 
+  using D = DrivingDomain;
+  py::class_<D>(m, "DrivingDomain",
+                "The paths a system built for the car alone is certified for, shrinking with "
+                "speed (docs/steering_system.md); keyword arguments.")
+      .def(py::init(&from_keywords<D>))
+      .def_readwrite("max_curvature_per_m", &D::max_curvature_per_m)
+      .def_readwrite("max_lateral_acceleration_mps2", &D::max_lateral_acceleration_mps2,
+                     "|kappa| <= this / v^2")
+      .def_readwrite("max_curvature_rate_per_m2", &D::max_curvature_rate_per_m2)
+      .def_readwrite("max_lateral_jerk_mps3", &D::max_lateral_jerk_mps3,
+                     "|d kappa / ds| <= this / v^3")
+      .def_static("for_vehicle", &D::for_vehicle, py::arg("vehicle"),
+                  "The car's full steering angle, its tires' mu g, full lock within a wheelbase "
+                  "and DrivingDomain.default_lateral_jerk_mps3.")
+      .def_readonly_static("default_lateral_jerk_mps3", &D::default_lateral_jerk_mps3)
+      .def("curvature_at", &D::curvature_at, py::arg("speed_mps"))
+      .def("curvature_rate_at", &D::curvature_rate_at, py::arg("speed_mps"))
+      .def("validate", &D::validate);
+
   using P = SteeringSystemParameters;
   py::class_<P>(m, "SteeringSystemParameters", "Slip input and observer; keyword arguments.")
       .def(py::init(&from_keywords<P>))
       .def_readwrite("slip_input", &P::slip_input)
       .def_readwrite("observer", &P::observer, "SideSlipObserverParameters")
+      .def_readwrite("domain", &P::domain,
+                     "DrivingDomain the controller is certified for (None: no such check)")
+      .def_readwrite("certified_max_speed_mps", &P::certified_max_speed_mps,
+                     "above it: ActiveLimit.beyond_certified_speed")
       .def_static("from_vehicle", &P::from_vehicle, py::arg("vehicle"),
                   py::arg("tire_model") = ObserverTireModel::linear)
       .def("validate", &P::validate);
@@ -247,6 +272,8 @@ void bind_system(py::module_& m) {
                      "Smith delay [s]; None = dead time + 3 / w_p")
       .def_readwrite("slip_input", &S::slip_input)
       .def_readwrite("observer_tire_model", &S::observer_tire_model)
+      .def_readwrite("domain", &S::domain,
+                     "DrivingDomain of the car-alone build; None = DrivingDomain.for_vehicle")
       .def("validate", &S::validate);
 
   py::class_<SteeringSystem>(
@@ -310,6 +337,17 @@ void bind_system(py::module_& m) {
       "The car's steering system on the path: the certified schedule from the car's limits, "
       "the vehicle's slip gradients and observer, the actuator's delay. Raises ValueError "
       "naming the field, InfeasibleLimits when the car cannot be certified.");
+  m.def(
+      "make_steering_system",
+      [](const VehicleDescription& car, const SteeringSystemOptions& options) {
+        return std::make_unique<SteeringSystem>(make_steering_system(car, options));
+      },
+      py::arg("car"), py::arg("options") = SteeringSystemOptions{},
+      "The car's steering system from the car alone, certified over options.domain (else "
+      "DrivingDomain.for_vehicle); paths arrive by set_path(), update() raises ControllerError "
+      "(not_configured) before the first. Above parameters.certified_max_speed_mps the "
+      "schedule's last entry holds (ActiveLimit.beyond_certified_speed); a path beyond the "
+      "domain sets ActiveLimit.path_beyond_domain.");
   m.def("steering_system_controller", &steering_system_controller, py::arg("car"),
         py::arg("options") = SteeringSystemOptions{},
         "The ControllerParameters make_steering_system() gives its schedule as the template.");

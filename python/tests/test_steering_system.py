@@ -123,6 +123,7 @@ BOUND_STRUCTS = [
     ("tuning/vehicle_steering_system.hpp", "SteeringSystemOptions", "SteeringSystemOptions", []),
     ("tuning/vehicle_steering_system.hpp", "VehicleDescription", "VehicleDescription", []),
     ("system/steering_system.hpp", "SteeringSystemParameters", "SteeringSystemParameters", []),
+    ("system/driving_domain.hpp", "DrivingDomain", "DrivingDomain", []),
     ("vehicle/side_slip_observer.hpp", "SideSlipObserverParameters",
      "SideSlipObserverParameters", []),
     ("vehicle/sensor_fault_gate.hpp", "SideSlipFaultGate", "SideSlipFaultGate", []),

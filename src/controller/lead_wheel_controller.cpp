@@ -43,6 +43,12 @@ LeadWheelController::LeadWheelController(const ControllerParameters& parameters,
   (void)reset(0.0);
 }
 
+LeadWheelController::LeadWheelController(const ControllerParameters& parameters, PathLater) {
+  parameters.validate();
+  apply_parameters(parameters);
+  (void)reset(0.0);
+}
+
 void LeadWheelController::apply_parameters(const ControllerParameters& parameters) noexcept {
   parameters_ = parameters;
   bounds_ = compute_chain_bounds(parameters_);
@@ -305,6 +311,7 @@ LeadWheelController::LeadWheelState LeadWheelController::evaluate_lead_wheel(
 Status LeadWheelController::compute_command(const ControllerInput& input,
                                             ControllerOutput& output) noexcept {
   if (!valid_input(input)) return Status::invalid_input;
+  if (!path_) return Status::not_configured;
   const int n = parameters_.chain.order;
   const double* wheelbases = parameters_.chain.wheelbases_m.data();
 

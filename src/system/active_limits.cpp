@@ -65,7 +65,9 @@ std::string describe_active_limits(std::uint32_t limits) {
                {limit_feedforward_bound, "feedforward_bound"},
                {limit_friction_guard, "friction_guard"},
                {limit_switching_bound, "switching_bound"},
-               {limit_steering_angle, "steering_angle"}};
+               {limit_steering_angle, "steering_angle"},
+               {limit_path_beyond_domain, "path_beyond_domain"},
+               {limit_beyond_certified_speed, "beyond_certified_speed"}};
   std::string text;
   for (const auto& entry : names) {
     if ((limits & entry.bit) == 0) continue;

@@ -51,6 +51,15 @@ std::optional<Violation> SteeringSystemParameters::first_violation() const noexc
       check.include(nested);
     }
   }
+  if (domain) {
+    if (std::optional<Violation> nested = domain->first_violation()) {
+      nested->owner = "SteeringSystemParameters";
+      nested->prefix = "domain.";
+      check.include(nested);
+    }
+  }
+  check.require(certified_max_speed_mps > 0.0, "certified_max_speed_mps", certified_max_speed_mps,
+                "must be > 0 (+inf: certified at every speed)");
   return check.first();
 }
 
@@ -105,6 +114,14 @@ Status SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
   controller_output_ = {};
   last_command_rad_ = measured_steering_angle_rad;
   return Status::ok;
+}
+
+Status SteeringSystem::set_path(std::shared_ptr<const Path> path) noexcept {
+  const PathCurvatureDemand demand =
+      path && parameters_.domain ? curvature_demand(*path) : PathCurvatureDemand{};
+  const Status status = controller_->set_path(std::move(path));
+  if (status == Status::ok) path_demand_ = demand;
+  return status;
 }
 
 bool SteeringSystem::valid_input(const SteeringSystemInput& input) const noexcept {
@@ -172,8 +189,14 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   output.derivatives_available = command.derivatives_available;
   output.tracking = command.diagnostics;
   output.side_slip = slip;
-  output.active_limits =
-      lead_wheel_ ? active_limits(*lead_wheel_, command, std::abs(input.speed_mps)) : limit_none;
+  const double speed = std::abs(input.speed_mps);
+  output.active_limits = lead_wheel_ ? active_limits(*lead_wheel_, command, speed) : limit_none;
+  if (parameters_.domain && path_demand_.beyond(*parameters_.domain, speed)) {
+    output.active_limits |= limit_path_beyond_domain;
+  }
+  if (speed > parameters_.certified_max_speed_mps) {
+    output.active_limits |= limit_beyond_certified_speed;
+  }
   return Status::ok;
 }
 

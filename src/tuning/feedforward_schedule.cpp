@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "smoothsteer/controller/steering_certificate.hpp"
@@ -164,11 +165,11 @@ ScheduleEntry solve_node(const SpeedProblem& problem) {
   throw InfeasibleLimits(text.str(), problem.speed, binding);
 }
 
-}  // namespace
-
-GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
-                                          const TuningOptions& options,
-                                          const std::vector<double>& speeds_mps) {
+//! The feedforward route with the path's bounds of each speed: `at_speed[k]` are the options at
+//! speeds_mps[k] (they differ in path_curvature_bound and path_curvature_rate_bound only).
+GainSchedule feedforward_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
+                                  const std::vector<TuningOptions>& at_speed,
+                                  const std::vector<double>& speeds_mps) {
   check_schedule_inputs(vehicle, options, speeds_mps);
   // The lead wheel's curvature rate on the reference path, per lead wheelbase (it depends on the
   // chain, not on the speed).
@@ -189,19 +190,21 @@ GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
   }
   std::vector<ScheduleEntry> entries;
   entries.reserve(speeds_mps.size());
-  for (const double v : speeds_mps) {
+  for (std::size_t k = 0; k < speeds_mps.size(); ++k) {
+    const double v = speeds_mps[k];
+    const TuningOptions& here = at_speed[k];
     ScheduleEntry best;
     for (int i = 1; i <= nodes; ++i) {
       const double lead = lead_wheelbase_node(vehicle, i, nodes);
       const ScheduleEntry e =
-          solve_node({vehicle, options, v, lead, rate_demands[static_cast<std::size_t>(i - 1)]});
+          solve_node({vehicle, here, v, lead, rate_demands[static_cast<std::size_t>(i - 1)]});
       // O3: the largest switching authority; O4: ties keep the shorter lead wheelbase.
       if (e.lead_curvature_bound > best.lead_curvature_bound * (1.0 + 1e-9)) best = e;
     }
     const double switching = best.lead_curvature_bound - best.feedforward_curvature_bound;
-    if (best.lead_curvature_bound <= 0.0 || switching < options.min_lead_curvature_bound ||
-        best.k_rob >= options.k_rob_ceiling) {
-      throw_infeasible({vehicle, options, v, best.lead_wheelbase_m}, best);
+    if (best.lead_curvature_bound <= 0.0 || switching < here.min_lead_curvature_bound ||
+        best.k_rob >= here.k_rob_ceiling) {
+      throw_infeasible({vehicle, here, v, best.lead_wheelbase_m}, best);
     }
     entries.push_back(best);
   }
@@ -209,7 +212,8 @@ GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
   // otherwise shrink entry k's switching authority (it stays valid at v_k).
   for (std::size_t k = entries.size(); k-- > 0;) {
     const std::size_t next = std::min(k + 1, entries.size() - 1);
-    const SpeedProblem problem{vehicle, options, entries[k].speed_mps, entries[k].lead_wheelbase_m};
+    const SpeedProblem problem{vehicle, at_speed[k], entries[k].speed_mps,
+                               entries[k].lead_wheelbase_m};
     for (int attempt = 0; attempt < 200; ++attempt) {
       bool ok = true;
       for (const double t : {0.25, 0.5, 0.75}) {
@@ -226,6 +230,32 @@ GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
     }
   }
   return GainSchedule(vehicle, options, std::move(entries));
+}
+
+}  // namespace
+
+GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
+                                          const TuningOptions& options,
+                                          const std::vector<double>& speeds_mps) {
+  return feedforward_schedule(vehicle, options,
+                              std::vector<TuningOptions>(speeds_mps.size(), options), speeds_mps);
+}
+
+GainSchedule compute_domain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
+                                     const DrivingDomain& domain,
+                                     const std::vector<double>& speeds_mps) {
+  domain.validate();
+  if (options.reference_path) {
+    throw std::invalid_argument(
+        "compute_domain_schedule: options.reference_path is set; the domain replaces the path "
+        "(use compute_feedforward_schedule for one path)");
+  }
+  std::vector<TuningOptions> at_speed(speeds_mps.size(), options);
+  for (std::size_t k = 0; k < speeds_mps.size(); ++k) {
+    at_speed[k].path_curvature_bound = domain.curvature_at(speeds_mps[k]);
+    at_speed[k].path_curvature_rate_bound = domain.curvature_rate_at(speeds_mps[k]);
+  }
+  return feedforward_schedule(vehicle, options, at_speed, speeds_mps);
 }
 
 ControllerParameters parameters_for_vehicle(const VehicleLimits& vehicle, double speed_mps,

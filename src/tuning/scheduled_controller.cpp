@@ -25,6 +25,23 @@ ScheduledController::ScheduledController(GainSchedule schedule, std::shared_ptr<
       controller_(parameters_at(non_empty(schedule_).entries().front().speed_mps),
                   std::move(path)) {}
 
+ScheduledController::ScheduledController(GainSchedule schedule, PathLater later,
+                                         std::optional<SpeedCompensation> compensation)
+    : schedule_(std::move(schedule)),
+      compensation_(checked(compensation)),
+      controller_(parameters_at(non_empty(schedule_).entries().front().speed_mps), later),
+      compensation_follows_path_(true) {}
+
+Status ScheduledController::set_path(std::shared_ptr<const Path> path) noexcept {
+  const double curvature = path ? path->max_abs_curvature() : 0.0;
+  const Status status = controller_.set_path(std::move(path));
+  if (status == Status::ok && compensation_follows_path_ && compensation_) {
+    compensation_->design_curvature_per_m = curvature;
+    tuned_speed_ = -1.0;  // the next update() retunes with the new compensation
+  }
+  return status;
+}
+
 ControllerParameters ScheduledController::parameters_at(double speed_mps) const noexcept {
   ControllerParameters p = schedule_.parameters_at(speed_mps);
   if (compensation_) {
@@ -42,6 +59,7 @@ ControllerParameters ScheduledController::parameters_at(double speed_mps) const 
 Status ScheduledController::compute_command(const ControllerInput& input,
                                             ControllerOutput& output) noexcept {
   if (!std::isfinite(input.speed_mps)) return Status::invalid_input;
+  if (!controller_.has_path()) return Status::not_configured;  // before the retune changes it
   const double speed = std::abs(input.speed_mps);
   if (speed != tuned_speed_) {
     const Status tuned = controller_.retune(parameters_at(speed));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "smoothsteer/tuning/gain_schedule.hpp"
 #include "smoothsteer/tuning/path_demand.hpp"
@@ -158,29 +159,72 @@ void check_schedule_template(const ControllerParameters& controller) {
   }
 }
 
-}  // namespace
-
-SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_ptr<const Path> path,
-                                    const SteeringSystemOptions& options) {
+//! The tuner's options for the car's schedule, without the path's demand.
+TuningOptions schedule_tuning(const VehicleDescription& car, const SteeringSystemOptions& options) {
   options.validate();
   check_schedule_template(options.controller);
   car.validate();
-  if (!path) throw std::invalid_argument("make_steering_system: path is null; a path is required");
   TuningOptions tuning;
   tuning.certificate = Certificate::feedforward;
   tuning.base = steering_system_controller(car, options);
   tuning.order = tuning.base.chain.order;
   tuning.feedforward_headroom = options.feedforward_headroom;
   tuning.max_longitudinal_acceleration_mps2 = options.max_longitudinal_acceleration_mps2;
-  const PathDemand demand = apply_path_demand(tuning, path);
+  return tuning;
+}
+
+//! The schedule's speeds: one step beyond the top speed, since parameters_at() blends each
+//! interval's upper entry with the next one.
+std::vector<double> schedule_speeds(const SteeringSystemOptions& options) {
   const double step = options.speed_step_mps;
-  // One step beyond: parameters_at() blends each interval's upper entry with the next one.
   const double last = std::ceil(options.max_speed_mps / step - 1e-9) * step + step;
-  GainSchedule schedule = compute_feedforward_schedule(vehicle_limits(car.vehicle), tuning,
-                                                       speed_grid(step, last, step));
+  return speed_grid(step, last, step);
+}
+
+//! compute(speeds) over the options' grid; where a speed is out of reach (InfeasibleLimits),
+//! over the speeds below it instead of refusing: the system then flags the speeds above its
+//! certified_max_speed_mps. Refuses only when the lowest speed is out of reach.
+template <class Compute>
+GainSchedule schedule_degrading_above_reach(const SteeringSystemOptions& options,
+                                            Compute&& compute) {
+  std::vector<double> speeds = schedule_speeds(options);
+  try {
+    return compute(speeds);
+  } catch (const InfeasibleLimits& error) {
+    std::erase_if(speeds, [&](double v) { return v >= error.speed_mps(); });
+    if (speeds.empty()) throw;
+    return compute(speeds);
+  }
+}
+
+//! The domain the car-alone schedule is certified for.
+DrivingDomain car_domain(const VehicleDescription& car, const SteeringSystemOptions& options) {
+  return options.domain.value_or(DrivingDomain::for_vehicle(car.vehicle));
+}
+
+SteeringSystemParameters system_parameters(const VehicleDescription& car,
+                                           const SteeringSystemOptions& options) {
   SteeringSystemParameters system =
       SteeringSystemParameters::from_vehicle(car.vehicle, options.observer_tire_model);
   system.slip_input = options.slip_input;
+  return system;
+}
+
+}  // namespace
+
+SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_ptr<const Path> path,
+                                    const SteeringSystemOptions& options) {
+  TuningOptions tuning = schedule_tuning(car, options);
+  if (!path) throw std::invalid_argument("make_steering_system: path is null; a path is required");
+  tuning.min_lead_curvature_bound = min_switching_authority_per_m;
+  const PathDemand demand = apply_path_demand(tuning, path);
+  const VehicleLimits limits = vehicle_limits(car.vehicle);
+  GainSchedule schedule =
+      schedule_degrading_above_reach(options, [&](const std::vector<double>& speeds) {
+        return compute_feedforward_schedule(limits, tuning, speeds);
+      });
+  SteeringSystemParameters system = system_parameters(car, options);
+  system.certified_max_speed_mps = schedule.max_speed_mps();
   // Without a delay of the caller's, the delay and the catch-up follow the speed
   // (speed_compensation.hpp), as the shipped scenarios' derived_compensation.
   std::optional<SpeedCompensation> compensation;
@@ -190,6 +234,39 @@ SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_p
   return SteeringSystem(
       std::make_unique<ScheduledController>(std::move(schedule), std::move(path), compensation),
       system);
+}
+
+std::unique_ptr<ScheduledController> make_car_controller(const VehicleDescription& car,
+                                                         const SteeringSystemOptions& options,
+                                                         std::shared_ptr<const Path> path) {
+  TuningOptions tuning = schedule_tuning(car, options);
+  tuning.min_lead_curvature_bound = min_switching_authority_per_m;
+  const DrivingDomain domain = car_domain(car, options);
+  const VehicleLimits limits = vehicle_limits(car.vehicle);
+  GainSchedule schedule =
+      schedule_degrading_above_reach(options, [&](const std::vector<double>& speeds) {
+        return compute_domain_schedule(limits, tuning, domain, speeds);
+      });
+  std::optional<SpeedCompensation> compensation;
+  if (!options.actuator_delay_s) {
+    // The design curvature follows each path set_path() accepts (ScheduledController).
+    compensation = speed_compensation(car.vehicle, actuator_group_delay_s(car.actuator), {});
+  }
+  auto controller =
+      std::make_unique<ScheduledController>(std::move(schedule), PathLater{}, compensation);
+  if (path && controller->set_path(std::move(path)) != Status::ok) {
+    throw std::invalid_argument("make_car_controller: the path was refused");
+  }
+  return controller;
+}
+
+SteeringSystem make_steering_system(const VehicleDescription& car,
+                                    const SteeringSystemOptions& options) {
+  std::unique_ptr<ScheduledController> controller = make_car_controller(car, options);
+  SteeringSystemParameters system = system_parameters(car, options);
+  system.domain = car_domain(car, options);
+  system.certified_max_speed_mps = controller->schedule().max_speed_mps();
+  return SteeringSystem(std::move(controller), system);
 }
 
 }  // namespace smoothsteer

@@ -34,6 +34,10 @@ class LeadWheelController final : public SteeringController {
  public:
   //! Validates the parameters (std::invalid_argument on error) and requires a path.
   LeadWheelController(const ControllerParameters& parameters, std::shared_ptr<const Path> path);
+  //! Without a path: update() returns not_configured until set_path() gives one.
+  LeadWheelController(const ControllerParameters& parameters, PathLater);
+  //! False until a path is set (only after the PathLater constructor).
+  bool has_path() const noexcept { return path_ != nullptr; }
 
  protected:
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;

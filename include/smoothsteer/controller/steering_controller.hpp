@@ -148,6 +148,11 @@ inline bool all_finite(const ControllerOutput& output) noexcept {
   return finite;
 }
 
+//! Tag of the constructors whose path arrives later, by set_path(): a driving stack has no path
+//! at start-up and sends its first trajectory after the controller is built. Until a path
+//! arrives, update() returns Status::not_configured and changes nothing.
+struct PathLater {};
+
 //! Interface of every steering controller in the library. update() is noexcept, allocation-free
 //! and deterministic. It checks what every controller must guarantee, so that no controller can
 //! miss it: an input outside ControllerInputRange gives invalid_input, a non-finite result gives

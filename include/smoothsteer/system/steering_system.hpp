@@ -29,6 +29,7 @@
 //! contract (SteeringController::set_path). Set-up (construction) throws std::invalid_argument.
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,6 +39,7 @@
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/status.hpp"
+#include "smoothsteer/system/driving_domain.hpp"
 #include "smoothsteer/validation.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
@@ -57,6 +59,14 @@ struct SteeringSystemParameters {
   SlipInput slip_input = SlipInput::observer;
   //! The observer's model and sensor noise (used for SlipInput::observer only).
   SideSlipObserverParameters observer{};
+
+  //! The paths the controller was certified for, when it was built for the car alone
+  //! (make_steering_system(car, options)): set_path() measures each path's demand and update()
+  //! sets limit_path_beyond_domain where it exceeds the domain at |v|. Absent: no such check.
+  std::optional<DrivingDomain> domain;
+  //! Above this |v| [m/s] the controller's limits are not certified (a gain schedule's last
+  //! entry holds): update() sets limit_beyond_certified_speed. +inf: certified at every speed.
+  double certified_max_speed_mps = std::numeric_limits<double>::infinity();
 
   //! The vehicle file's observer (SideSlipObserverParameters::from_vehicle) with `tire_model`.
   static SteeringSystemParameters from_vehicle(
@@ -105,6 +115,13 @@ enum ActiveLimit : std::uint32_t {
   limit_switching_bound = 1u << 3,
   //! The chain's front angle delta_1 at its invariant-set bound (the steering angle limit).
   limit_steering_angle = 1u << 4,
+  //! The path asks more curvature or curvature rate than the domain the system was certified
+  //! for allows at this speed (SteeringSystemParameters::domain): it is followed as well as
+  //! the limits allow.
+  limit_path_beyond_domain = 1u << 5,
+  //! |v| above SteeringSystemParameters::certified_max_speed_mps: the controller's certificate
+  //! does not cover this speed (the car's limits may still hold through the governor).
+  limit_beyond_certified_speed = 1u << 6,
 };
 //! "lead_curvature|friction_guard", or "none".
 std::string describe_active_limits(std::uint32_t limits);
@@ -165,9 +182,9 @@ class SteeringSystem {
   //! |angle| >= pi / 2 or beyond the car's angle limit, and then nothing changes.
   Status reset(double measured_steering_angle_rad = 0.0) noexcept;
   //! Replanning: SteeringController::set_path's contract.
-  Status set_path(std::shared_ptr<const Path> path) noexcept {
-    return controller_->set_path(std::move(path));
-  }
+  //! With a domain (SteeringSystemParameters::domain) it also measures the path's demand
+  //! (curvature_demand(): O(curvature samples), no allocation).
+  Status set_path(std::shared_ptr<const Path> path) noexcept;
   //! Evaluation hook: SteeringController::set_matched_disturbance.
   bool set_matched_disturbance(double lead_curvature_disturbance) noexcept {
     return controller_->set_matched_disturbance(lead_curvature_disturbance);
@@ -196,6 +213,7 @@ class SteeringSystem {
   std::optional<SideSlipObserver> pending_observer_;
   ControllerInput controller_input_;
   ControllerOutput controller_output_;  //!< the previous output, as update() expects
+  PathCurvatureDemand path_demand_;     //!< of the last path set_path() accepted (with a domain)
   double last_command_rad_ = 0.0;
 };
 

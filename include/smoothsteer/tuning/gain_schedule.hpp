@@ -21,6 +21,7 @@
 
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/system/driving_domain.hpp"
 #include "smoothsteer/tuning/static_map.hpp"
 #include "smoothsteer/tuning/vehicle_limits.hpp"
 #include "smoothsteer/validation.hpp"
@@ -164,6 +165,15 @@ GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOpt
 GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
                                           const TuningOptions& options,
                                           const std::vector<double>& speeds_mps);
+
+//! The feedforward route for a domain of paths instead of one (system/driving_domain.hpp): at
+//! each speed the path bounds are the domain's there, domain.curvature_at(v) and
+//! domain.curvature_rate_at(v); options.path_curvature_bound and path_curvature_rate_bound are
+//! not used. std::invalid_argument for an invalid domain or a reference path in the options,
+//! InfeasibleLimits as compute_feedforward_schedule.
+GainSchedule compute_domain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
+                                     const DrivingDomain& domain,
+                                     const std::vector<double>& speeds_mps);
 
 //! Certified parameters for a car (docs/tuning.md, "Parameters for your car"): the feedforward
 //! route's entry for the top speed `speed_mps`. Valid at every lower speed too (the certified

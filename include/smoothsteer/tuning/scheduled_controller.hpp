@@ -23,6 +23,11 @@ class ScheduledController final : public SteeringController {
   //! actuator_delay_s and feedforward_catch_up.
   ScheduledController(GainSchedule schedule, std::shared_ptr<const Path> path,
                       std::optional<SpeedCompensation> compensation = std::nullopt);
+  //! Without a path: update() returns not_configured, and changes nothing, until set_path().
+  //! The compensation's design curvature then follows each path set_path() accepts (its
+  //! largest |kappa|, Path::max_abs_curvature()), as if the system had been built on it.
+  ScheduledController(GainSchedule schedule, PathLater,
+                      std::optional<SpeedCompensation> compensation = std::nullopt);
 
  protected:
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
@@ -38,9 +43,7 @@ class ScheduledController final : public SteeringController {
   ControllerParameters parameters_at(double speed_mps) const noexcept;
   const LeadWheelController& controller() const noexcept { return controller_; }
   //! Replanning, forwarded to the inner controller (see SteeringController::set_path).
-  Status set_path(std::shared_ptr<const Path> path) noexcept override {
-    return controller_.set_path(std::move(path));
-  }
+  Status set_path(std::shared_ptr<const Path> path) noexcept override;
   //! Forwarded to the inner controller (evaluation hook, see LeadWheelController).
   bool set_matched_disturbance(double kappa_d) noexcept override {
     return controller_.set_matched_disturbance(kappa_d);
@@ -52,6 +55,7 @@ class ScheduledController final : public SteeringController {
   std::optional<SpeedCompensation> compensation_;
   LeadWheelController controller_;
   double tuned_speed_ = -1.0;  //!< |v| of the last retune; equal speeds skip the retune
+  bool compensation_follows_path_ = false;  //!< set by the PathLater constructor
 };
 
 }  // namespace smoothsteer

@@ -13,8 +13,10 @@
 
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/system/driving_domain.hpp"
 #include "smoothsteer/system/steering_system.hpp"
 #include "smoothsteer/tuning/path_demand.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "smoothsteer/tuning/speed_compensation.hpp"
 #include "smoothsteer/tuning/vehicle_limits.hpp"
 #include "smoothsteer/validation.hpp"
@@ -67,6 +69,9 @@ struct SteeringSystemOptions {
   std::optional<double> actuator_delay_s;
   SlipInput slip_input = SlipInput::observer;
   ObserverTireModel observer_tire_model = ObserverTireModel::magic_formula;
+  //! The paths the car-alone overload of make_steering_system() certifies for; absent:
+  //! DrivingDomain::for_vehicle(car.vehicle). The path overload does not use it.
+  std::optional<DrivingDomain> domain;
 
   //! The first rule broken (validation.hpp); is_valid(), validation_error(), validate() use it.
   std::optional<Violation> first_violation() const noexcept;
@@ -99,10 +104,37 @@ SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
 ControllerParameters steering_system_controller(const VehicleDescription& car,
                                                 const SteeringSystemOptions& options);
 
-//! Builds the car's steering system on `path`. Throws std::invalid_argument naming the field
-//! (vehicle, actuator, options, a null path) and InfeasibleLimits when the car cannot be
-//! certified on the grid.
+//! Builds the car's steering system on `path`, its schedule certified for the path's demand
+//! with a switching authority of at least min_switching_authority_per_m. Where a grid speed is
+//! out of reach the schedule ends below it instead of refusing to be built: above
+//! parameters().certified_max_speed_mps its last entry holds and update() sets
+//! limit_beyond_certified_speed (the governor still holds the car's limits on the command).
+//! Throws std::invalid_argument naming the field (vehicle, actuator, options, a null path) and
+//! InfeasibleLimits only when the lowest grid speed cannot be certified.
 SteeringSystem make_steering_system(const VehicleDescription& car, std::shared_ptr<const Path> path,
                                     const SteeringSystemOptions& options = {});
+
+//! Builds the car's steering system from the car alone, for a driving stack that hands over its
+//! paths later by set_path() (update() returns not_configured until the first). The schedule is
+//! certified at each grid speed for every path of the domain there (options.domain, else
+//! DrivingDomain::for_vehicle; compute_domain_schedule), and ends below a speed out of reach as
+//! the path overload's does. A path beyond the domain at the current speed sets
+//! limit_path_beyond_domain. The compensation's design curvature follows each path set_path()
+//! accepts. Errors as the path overload's.
+SteeringSystem make_steering_system(const VehicleDescription& car,
+                                    const SteeringSystemOptions& options = {});
+//! The controller make_steering_system(car, options) runs: the schedule over the domain, the
+//! compensation's design curvature following each path it is given. With `path` it starts on
+//! it (the scenario runner's controller type steering_system); without, update() returns
+//! not_configured until set_path(). Errors as make_steering_system's.
+std::unique_ptr<ScheduledController> make_car_controller(
+    const VehicleDescription& car, const SteeringSystemOptions& options = {},
+    std::shared_ptr<const Path> path = nullptr);
+
+//! The car's schedule's least switching authority kbar_sw [1/m] (the tuner's default,
+//! TuningOptions::min_lead_curvature_bound, is 1e-3): at motorway speeds the steering rate
+//! limit leaves a passenger car less than 1e-3 1/m (9.9e-4 at 24 m/s), which still steers the
+//! residual the feedforward leaves.
+inline constexpr double min_switching_authority_per_m = 1e-4;
 
 }  // namespace smoothsteer
