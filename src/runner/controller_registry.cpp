@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <filesystem>
@@ -31,12 +32,12 @@ namespace {
 //! the rear axle on curved paths); the wheelbases follow Sec. IV-A: the fictive wheelbase of
 //! eq. (cornering_constr).
 //! Keys shared by the fixed and the scheduled lead-wheel controller.
-void read_law_options(ConfigSection& c, ControllerParameters& p, const VehicleParameters& vehicle) {
+void read_law_options(ConfigSection& c, ControllerParameters& p, const VehicleParameters& vehicle,
+                      const ControllerParameters& defaults = ControllerParameters{}) {
   // Defaults come from the C++ struct: a scenario key and its field cannot disagree. The direct
   // keys are the field table's (parameter_fields.hpp), each read as its row says; the chain's
   // order, bound and wheelbases are make_lead_wheel's (a schedule gives them otherwise), the
   // slip gradients, the friction guard and the governor follow from the vehicle file below.
-  const ControllerParameters defaults;
   for (const ParameterField& field : controller_parameter_fields()) {
     if (field.scenario != ScenarioKey::direct || field.group == ParameterGroup::governor ||
         field.kind == FieldKind::wheelbases || field.member == "chain.order" ||
@@ -195,10 +196,58 @@ std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
   }
 }
 
+//! The car's own system (make_car_controller, docs/steering_system.md): the schedule certified
+//! over a driving domain from the vehicle file and the actuator, no schedule CSV. Every law key
+//! of lead_wheel, with the car's block (default_steering_system_controller()) as the default;
+//! max_speed_mps (40), feedforward_headroom (1.2), and `domain` (absent keys: the car's,
+//! DrivingDomain::for_vehicle).
+std::unique_ptr<SteeringController> make_car_system(ConfigSection& c,
+                                                    const ControllerContext& context) {
+  const VehicleParameters& vehicle = context.vehicle;
+  SteeringSystemOptions options;
+  options.max_speed_mps = c.number("max_speed_mps", 40.0, {1.0, 100.0});
+  options.feedforward_headroom =
+      c.number("feedforward_headroom", options.feedforward_headroom, {1.0, 3.0});
+  ControllerParameters defaults = default_steering_system_controller();
+  // The template leaves the car's groups off (make_car_controller sets them from the vehicle
+  // file); their keys default to what make_steering_system does.
+  defaults.single_track.enabled = options.slip_preview;
+  defaults.friction_guard.enabled = options.friction_guard;
+  ControllerParameters base = default_steering_system_controller();
+  base.chain.vehicle_wheelbase_m = vehicle.wheelbase_m();
+  read_law_options(c, base, vehicle, defaults);
+  options.slip_preview = base.single_track.rear_slip_gradient_s2pm != 0.0 ||
+                         base.single_track.front_slip_gradient_s2pm != 0.0;
+  options.friction_guard = std::isfinite(base.friction_guard.max_lateral_acceleration_mps2);
+  if (c.has("actuator_delay_s")) {
+    options.actuator_delay_s = base.delay_compensation.actuator_delay_s;
+  }
+  options.controller = base;
+  ConfigSection domain_keys = c.section("domain");
+  DrivingDomain domain = DrivingDomain::for_vehicle(vehicle);
+  for (auto [key, field] :
+       {std::pair{"max_curvature_per_m", &domain.max_curvature_per_m},
+        {"max_lateral_acceleration_mps2", &domain.max_lateral_acceleration_mps2},
+        {"max_curvature_rate_per_m2", &domain.max_curvature_rate_per_m2},
+        {"max_lateral_jerk_mps3", &domain.max_lateral_jerk_mps3}}) {
+    *field = domain_keys.number(key, *field, {0.0, 1e6, true, false});
+  }
+  domain_keys.finish();
+  c.store("domain", domain_keys.resolved());
+  options.domain = domain;
+  try {
+    return make_car_controller({vehicle, context.actuator}, options, context.path);
+  } catch (const std::invalid_argument& error) {
+    throw ConfigError(c.file() + ": key '" + c.full_key("") + "': " + error.what());
+  }
+}
+
 struct Registry {
   std::mutex mutex;
   std::map<std::string, ControllerFactory> factories{
-      {"lead_wheel", make_lead_wheel}, {"scheduled_lead_wheel", make_scheduled_lead_wheel}};
+      {"lead_wheel", make_lead_wheel},
+      {"scheduled_lead_wheel", make_scheduled_lead_wheel},
+      {"steering_system", make_car_system}};
 };
 
 Registry& registry() {

@@ -1,0 +1,58 @@
+// The scenario runner's controller type steering_system: the car's own system built from the
+// scenario's vehicle and actuator blocks (make_car_controller), no schedule file. On the shipped
+// lane changes it tracks within 1.1x of the files' own block; a bad domain key or a field the
+// schedule sets names the file and the key.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "smoothsteer/runner/scenario.hpp"
+#include "support/source_dir.hpp"
+
+namespace smoothsteer {
+namespace {
+
+const std::string kCarSystem = "controller={type: steering_system}";
+
+TEST(CarSystemType, TracksTheShippedLaneChangesAsTheirOwnBlock) {
+  for (const char* name : {"lane_change_10", "lane_change_15"}) {
+    const std::string file = testing::source_file(std::string("scenarios/") + name + ".yaml");
+    const runner::RunResult block = runner::run_scenario(runner::load_scenario(file));
+    const runner::RunResult car = runner::run_scenario(runner::load_scenario(file, {kCarSystem}));
+    ASSERT_EQ(car.simulation.status, Status::ok) << name;
+    std::printf("%s: max |e| %.4f m with the car's system, %.4f m with the file's block\n", name,
+                car.metrics.max_abs_rear_error_m, block.metrics.max_abs_rear_error_m);
+    EXPECT_LE(car.metrics.max_abs_rear_error_m, 1.1 * block.metrics.max_abs_rear_error_m + 0.002)
+        << name;
+    EXPECT_EQ(car.metrics.held_rate_violations, 0) << name;
+    EXPECT_EQ(car.metrics.held_acceleration_violations, 0) << name;
+  }
+}
+
+std::string error_of(const std::vector<std::string>& overrides) {
+  try {
+    (void)runner::load_scenario(testing::source_file("scenarios/lane_change_15.yaml"), overrides);
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(CarSystemType, BadKeysNameTheFileAndTheKey) {
+  const std::string jerk =
+      error_of({"controller={type: steering_system, domain: {max_lateral_jerk_mps3: -1}}"});
+  EXPECT_NE(jerk.find("lane_change_15.yaml"), std::string::npos) << jerk;
+  EXPECT_NE(jerk.find("controller.domain.max_lateral_jerk_mps3"), std::string::npos) << jerk;
+  const std::string unknown = error_of({"controller={type: steering_system, domain: {jerk: 1}}"});
+  EXPECT_NE(unknown.find("jerk"), std::string::npos) << unknown;
+  const std::string k_rob = error_of({"controller={type: steering_system, k_rob: 0.5}"});
+  EXPECT_NE(k_rob.find("k_rob"), std::string::npos) << k_rob;
+  EXPECT_NE(k_rob.find("gain schedule"), std::string::npos) << k_rob;
+}
+
+}  // namespace
+}  // namespace smoothsteer
