@@ -229,9 +229,11 @@ void bind_system(py::module_& m) {
       .def_readwrite("max_lateral_jerk_mps3", &D::max_lateral_jerk_mps3,
                      "|d kappa / ds| <= this / v^3")
       .def_static("for_vehicle", &D::for_vehicle, py::arg("vehicle"),
-                  "The car's full steering angle, its tires' mu g, full lock within a wheelbase "
-                  "and DrivingDomain.default_lateral_jerk_mps3.")
-      .def_readonly_static("default_lateral_jerk_mps3", &D::default_lateral_jerk_mps3)
+                  "The road domain (the road_* bounds) capped by what the car can do.")
+      .def_readonly_static("road_lateral_acceleration_mps2", &D::road_lateral_acceleration_mps2)
+      .def_readonly_static("road_lateral_jerk_mps3", &D::road_lateral_jerk_mps3)
+      .def_readonly_static("road_curvature_per_m", &D::road_curvature_per_m)
+      .def_readonly_static("road_curvature_rate_per_m2", &D::road_curvature_rate_per_m2)
       .def("curvature_at", &D::curvature_at, py::arg("speed_mps"))
       .def("curvature_rate_at", &D::curvature_rate_at, py::arg("speed_mps"))
       .def("validate", &D::validate);

@@ -19,7 +19,9 @@
 //! The matrix is symmetric positive definite and pentadiagonal: a banded LDL^T solves it in
 //! O(n), so the whole fit is O(n) per bisection step.
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -27,6 +29,10 @@
 
 namespace smoothsteer::detail {
 namespace {
+
+//! How many waypoints the mirror extends each end by (at most all but one): 40 m at a planner's
+//! 1 m spacing, beyond the reach of the heaviest smoothing that keeps an arc's shape.
+constexpr std::size_t end_extension_points = 40;
 
 //! The knots of one fit: the smoothed points and their second derivatives.
 struct SmoothingFit {
@@ -123,33 +129,93 @@ class SmoothingProblem {
   std::vector<double> inverse_;
 };
 
-}  // namespace
-
-std::vector<PathSegment> smoothing_cubic_spline(const std::vector<Vec2>& waypoints,
-                                                double tolerance_m) {
-  const SmoothingProblem problem(waypoints);
+//! The fit of `problem` whose knots keep Reinsch's RMS distance `tolerance_m` from its points.
+SmoothingFit fit_within(const SmoothingProblem& problem, double tolerance_m) {
   // alpha from 1e-10 to 1e10 times the spacing's cube spans interpolation to the line fit.
   const double scale = problem.alpha_scale();
   double low = std::log(1e-10 * scale);
   double high = std::log(1e10 * scale);
   SmoothingFit best = problem.fit(std::exp(high));
-  if (best.rms_deviation_m > tolerance_m) {
-    // The largest alpha within the tolerance; the least one tried if none is within it.
-    bool within = false;
-    for (int step = 0; step < 60 && high - low > 1e-6; ++step) {
-      const double middle = 0.5 * (low + high);
-      SmoothingFit trial = problem.fit(std::exp(middle));
-      if (trial.rms_deviation_m > tolerance_m) {
-        high = middle;
-      } else {
-        low = middle;
-        best = std::move(trial);
-        within = true;
-      }
+  if (best.rms_deviation_m <= tolerance_m) return best;
+  // The largest alpha within the tolerance; the least one tried if none is within it.
+  bool within = false;
+  for (int step = 0; step < 60 && high - low > 1e-6; ++step) {
+    const double middle = 0.5 * (low + high);
+    SmoothingFit trial = problem.fit(std::exp(middle));
+    if (trial.rms_deviation_m > tolerance_m) {
+      high = middle;
+    } else {
+      low = middle;
+      best = std::move(trial);
+      within = true;
     }
-    if (!within) best = problem.fit(std::exp(low));
   }
-  return cubic_segments_from_moments(best.knot_points, best.moments, problem.spacing());
+  return within ? best : problem.fit(std::exp(low));
+}
+
+//! `point` mirrored across the line through `centre` normal to the unit `tangent`.
+Vec2 mirrored(Vec2 point, Vec2 centre, Vec2 tangent) {
+  return point - (2.0 * dot(point - centre, tangent)) * tangent;
+}
+
+//! Unit tangent of the fit at knot `first` (towards `first + 1`) or at knot `last` (from
+//! `last - 1`), from the cubic's first derivative there.
+Vec2 start_tangent(const SmoothingFit& fit, const std::vector<double>& spacing, std::size_t first) {
+  const double h = spacing[first];
+  const Vec2 d = (1.0 / h) * (fit.knot_points[first + 1] - fit.knot_points[first]) -
+                 (h / 6.0) * (2.0 * fit.moments[first] + fit.moments[first + 1]);
+  return (1.0 / norm(d)) * d;
+}
+Vec2 end_tangent(const SmoothingFit& fit, const std::vector<double>& spacing, std::size_t last) {
+  const double h = spacing[last - 1];
+  const Vec2 d = (1.0 / h) * (fit.knot_points[last] - fit.knot_points[last - 1]) +
+                 (h / 6.0) * (fit.moments[last - 1] + 2.0 * fit.moments[last]);
+  return (1.0 / norm(d)) * d;
+}
+
+}  // namespace
+
+std::vector<PathSegment> smoothing_cubic_spline(const std::vector<Vec2>& waypoints,
+                                                double tolerance_m) {
+  // A natural spline ends straight: fitted alone, a window of an arc bends too little near its
+  // ends (curvature 0 there, ramping up over the smoothing's length), which is where a planner's
+  // window puts the car. So the waypoints are extended at each end by their mirror image across
+  // the fit's normal there (which continues an arc as the same arc), refitted, and the
+  // extension cut off again; the mirror follows the refit twice.
+  const std::size_t n = waypoints.size();
+  const std::size_t pad = std::min(n - 1, end_extension_points);
+  SmoothingFit fit = fit_within(SmoothingProblem(waypoints), tolerance_m);
+  std::size_t first = 0;  // the knot of waypoints[0] in the fit
+  std::vector<double> spacing = SmoothingProblem(waypoints).spacing();
+  for (int pass = 0; pass < 2; ++pass) {
+    const Vec2 start = fit.knot_points[first];
+    const Vec2 end = fit.knot_points[first + n - 1];
+    const Vec2 start_direction = start_tangent(fit, spacing, first);
+    const Vec2 end_direction = end_tangent(fit, spacing, first + n - 1);
+    std::vector<Vec2> extended;
+    extended.reserve(n + 2 * pad);
+    for (std::size_t k = pad; k >= 1; --k) {
+      extended.push_back(mirrored(waypoints[k], start, start_direction));
+    }
+    extended.insert(extended.end(), waypoints.begin(), waypoints.end());
+    for (std::size_t k = 1; k <= pad; ++k) {
+      extended.push_back(mirrored(waypoints[n - 1 - k], end, end_direction));
+    }
+    const SmoothingProblem problem(extended);
+    const std::vector<double>& steps = problem.spacing();
+    if (*std::min_element(steps.begin(), steps.end()) < 1e-9) break;  // a mirror met its end
+    fit = fit_within(problem, tolerance_m);
+    spacing = problem.spacing();
+    first = pad;
+  }
+  // The segments between waypoints[0] and waypoints[n - 1]: each depends on its two knots only.
+  const auto from = static_cast<std::ptrdiff_t>(first);
+  const auto count = static_cast<std::ptrdiff_t>(n);
+  const std::vector<Vec2> knots(fit.knot_points.begin() + from,
+                                fit.knot_points.begin() + from + count);
+  const std::vector<Vec2> moments(fit.moments.begin() + from, fit.moments.begin() + from + count);
+  const std::vector<double> steps(spacing.begin() + from, spacing.begin() + from + count - 1);
+  return cubic_segments_from_moments(knots, moments, steps);
 }
 
 }  // namespace smoothsteer::detail

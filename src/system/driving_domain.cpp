@@ -9,10 +9,12 @@ DrivingDomain DrivingDomain::for_vehicle(const VehicleParameters& vehicle) {
   vehicle.validate();
   DrivingDomain domain;
   const double wheelbase = vehicle.wheelbase_m();
-  domain.max_curvature_per_m = std::tan(vehicle.max_steering_angle_rad) / wheelbase;
-  domain.max_lateral_acceleration_mps2 = vehicle.friction_limit_mps2();
-  domain.max_curvature_rate_per_m2 = domain.max_curvature_per_m / wheelbase;
-  domain.max_lateral_jerk_mps3 = default_lateral_jerk_mps3;
+  const double full_lock = std::tan(vehicle.max_steering_angle_rad) / wheelbase;
+  domain.max_curvature_per_m = std::min(road_curvature_per_m, full_lock);
+  domain.max_lateral_acceleration_mps2 =
+      std::min(road_lateral_acceleration_mps2, vehicle.friction_limit_mps2());
+  domain.max_curvature_rate_per_m2 = std::min(road_curvature_rate_per_m2, full_lock / wheelbase);
+  domain.max_lateral_jerk_mps3 = road_lateral_jerk_mps3;
   return domain;
 }
 

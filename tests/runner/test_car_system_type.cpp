@@ -1,7 +1,7 @@
 // The scenario runner's controller type steering_system: the car's own system built from the
 // scenario's vehicle and actuator blocks (make_car_controller), no schedule file. On the shipped
-// lane changes it tracks within 1.1x of the files' own block; a bad domain key or a field the
-// schedule sets names the file and the key.
+// roads and the hairpin it tracks within 1.1x of the files' own blocks; a bad domain key or a
+// field the schedule sets names the file and the key.
 
 #include <gtest/gtest.h>
 
@@ -18,8 +18,12 @@ namespace {
 
 const std::string kCarSystem = "controller={type: steering_system}";
 
-TEST(CarSystemType, TracksTheShippedLaneChangesAsTheirOwnBlock) {
-  for (const char* name : {"lane_change_10", "lane_change_15"}) {
+// The roads and the hairpin: the files' blocks were certified for their own paths; the car's
+// system, for every road of its domain. The ISO lane changes lie beyond that domain (an evasive
+// manoeuvre) and are measured in docs/scenarios.md, not bounded here.
+TEST(CarSystemType, TracksTheRoadsAsTheirOwnBlocks) {
+  for (const char* name : {"roads/motorway_exit", "roads/roundabout", "roads/parking_lot",
+                           "roads/urban_turn", "hairpin"}) {
     const std::string file = testing::source_file(std::string("scenarios/") + name + ".yaml");
     const runner::RunResult block = runner::run_scenario(runner::load_scenario(file));
     const runner::RunResult car = runner::run_scenario(runner::load_scenario(file, {kCarSystem}));

@@ -20,23 +20,31 @@ namespace smoothsteer {
 
 struct DrivingDomain {
   //! Largest |kappa| of a path at any speed [1/m] (at low speed: parking, hairpins).
-  double max_curvature_per_m = 0.4;
+  double max_curvature_per_m = road_curvature_per_m;
   //! Largest lateral acceleration a path asks of the car [m/s^2]: |kappa| <= this / v^2.
-  double max_lateral_acceleration_mps2 = 8.0;
+  double max_lateral_acceleration_mps2 = road_lateral_acceleration_mps2;
   //! Largest |d kappa / ds| of a path at any speed [1/m^2] (a curvature jump has none: the
   //! feedforward plans it as a ramp, docs/feedforward.md).
-  double max_curvature_rate_per_m2 = 0.1;
+  double max_curvature_rate_per_m2 = road_curvature_rate_per_m2;
   //! Largest lateral jerk a path asks [m/s^3]: |d kappa / ds| <= this / v^3.
-  double max_lateral_jerk_mps3 = default_lateral_jerk_mps3;
+  double max_lateral_jerk_mps3 = road_lateral_jerk_mps3;
 
-  //! The domain for `vehicle`: its full steering angle (tan(max_steering_angle) / (lf + lr)),
-  //! its tires' friction limit mu g, a curvature rate that reaches full lock within one
-  //! wheelbase, and a lateral jerk of default_lateral_jerk_mps3.
+  //! The roads a planner sends, as for_vehicle() caps them. A wider domain costs switching
+  //! authority on every path (docs/steering_system.md measures it); a path beyond it is flagged.
+  //! 4 m/s^2 (0.4 g): beyond it a passenger car's tires leave their linear range.
+  static constexpr double road_lateral_acceleration_mps2 = 4.0;
+  //! Road clothoids keep below 1 m/s^3; the urban turn, the roundabout and the hairpins of the
+  //! road suite ask up to 5; the ISO double lane change, an evasive manoeuvre, 21 at 15 m/s.
+  static constexpr double road_lateral_jerk_mps3 = 5.0;
+  //! A 5 m radius at the rear axle: a passenger car's turning circle.
+  static constexpr double road_curvature_per_m = 0.2;
+  //! Full road curvature within 4 m.
+  static constexpr double road_curvature_rate_per_m2 = 0.05;
+
+  //! The road domain for `vehicle`: each road bound above, capped by what the car can do (its
+  //! full steering angle tan(max_steering_angle) / (lf + lr), that over one wheelbase as the
+  //! curvature rate, its tires' friction limit mu g).
   static DrivingDomain for_vehicle(const VehicleParameters& vehicle);
-  //! The lateral jerk for_vehicle() takes [m/s^3]: the shipped lane changes ask 6-21 m/s^3 at
-  //! 10-15 m/s (the ISO double lane change is an evasive manoeuvre), the hairpin 8.5 m/s^3, the
-  //! roads of the road suite at most 5 m/s^3; road design keeps clothoids below 1 m/s^3.
-  static constexpr double default_lateral_jerk_mps3 = 25.0;
 
   //! Largest |kappa| at |v| = speed_mps [1/m]: min(max_curvature, a / v^2).
   double curvature_at(double speed_mps) const noexcept;
