@@ -134,6 +134,10 @@ TEST_P(EveryControllerUnderHostileInput, NeverReturnsOkWithNonFiniteValues) {
 INSTANTIATE_TEST_SUITE_P(Baselines, EveryControllerUnderHostileInput,
                          ::testing::ValuesIn(comparison_controller_names()));
 
+// The inputs that once came back ok with non-finite values: a coordinate of 1e155, whose squared
+// distances overflow (-inf lateral errors), and a speed of 1e308 (LQR's NaN diagnostics). They lie
+// far beyond ControllerInputRange, so every comparison controller must refuse them with
+// invalid_input before any arithmetic.
 TEST(HostileControllerInput, TheIssuesCasesAreRefused) {
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 1000.0));
   for (const std::string& name : comparison_controller_names()) {

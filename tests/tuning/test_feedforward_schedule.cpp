@@ -100,7 +100,10 @@ TEST(FeedforwardSchedule, TheShippedCarIsFeasibleOnItsScenarioPaths) {
   circles.max_longitudinal_acceleration_mps2 = 0.5;
   circles.feedforward_rate_share = 0.3;
   EXPECT_NO_THROW(compute_feedforward_schedule(car, circles, speed_grid(1.0, 13.0, 0.5)));
-  // The box route is infeasible there above about 7 m/s (the issue this route resolves).
+  // The paper's box route is infeasible there above about 7 m/s: it covers the path's curvature
+  // with k_rob kbar_n and certifies the rate over the whole invariant box, which the car's
+  // 0.4 rad/s cannot hold at speed (docs/feedforward.md). The feedforward route above certifies
+  // through the path's own curvature rate instead, so the same car passes up to 20 m/s.
   TuningOptions box = lane_change;
   box.certificate = Certificate::box;
   StaticMapOptions map_options;
