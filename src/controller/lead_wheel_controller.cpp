@@ -109,6 +109,7 @@ void LeadWheelController::initialise_chain(double vehicle_steering_angle) noexce
   feedforward_envelope_ = std::abs(feedforward_curvature_);
   far_share_ = 0.0;
   heading_envelope_ = 0.0;
+  near_layer_.reset();
 }
 
 Status LeadWheelController::retune(const ControllerParameters& parameters) noexcept {
@@ -432,8 +433,13 @@ Status LeadWheelController::compute_command(const ControllerInput& input,
       // the error is gone: its share decays over SteeringGovernor::far_law_memory_m, so that the
       // slow near-path surface does not finish an engagement (docs/governor.md).
       const double layer = parameters_.law.boundary_layer;
+      // Stiff on steady stretches, the certified layer while the path moves (near_law_layer.hpp).
+      if (step == 0)
+        near_layer_.observe(lead.projection.curvature, speed_magnitude * input.period_s,
+                            speed_magnitude);
+      const double near_layer = near_layer_.layer(layer, near_bound, speed_magnitude);
       const SwitchingResult near = dubins_switching_law(lead.lateral_error, lead.relative_heading,
-                                                        near_bound, layer, parameters_);
+                                                        near_bound, near_layer, parameters_);
       const double wanted =
           layer > 0.0 ? std::clamp(std::abs(near.sliding_variable) / layer - 1.0, 0.0, 1.0) : 1.0;
       far_share_ = std::max(wanted, far_share_ - step_length / SteeringGovernor::far_law_memory_m);

@@ -3,7 +3,8 @@
 // 0.001 1/m or a crossfall up to 3 %, either sign, acting on the plant only from t = 0 on a
 // straight road at 8-19 m/s. From 15 s on the rear axle stays within 2 cm, the held command
 // within the car's limits and the estimate within the feedforward's bound. Without the estimate
-// the same cases stand off by up to 2 m.
+// at least a third of the same cases stand off by more than 2 cm (up to 0.8 m: the near law,
+// stiff on the straight, holds part of the disturbance itself).
 
 #include <gtest/gtest.h>
 
@@ -77,11 +78,41 @@ TEST(DisturbanceRejection, TheCarsBlockRemovesASteadyDisturbanceOfItsClass) {
     EXPECT_LE(outcome.largest_estimate, 0.008);
     std::vector<std::string> without = overrides;
     without.push_back("controller.disturbance_estimation_length_m=0");
-    if (run(without).settled_error_m > 0.05) ++stood_off;
+    if (run(without).settled_error_m > 0.02) ++stood_off;
   }
-  // The check can fail: without the estimate most of these cases stand beside the path (the
+  // The check can fail: without the estimate many of these cases stand beside the path (the
   // crossfall's are the exception: the tires take it, docs/simulation.md).
   EXPECT_GE(stood_off, cases / 3);
+}
+
+// A cold start: the rack misaligned by up to 0.3 deg from t = 0, which the estimate has not
+// learned yet, on a straight road at 8-12 m/s. The near law is stiff on steady stretches
+// (near_law_layer.hpp), so the transient stays within a few centimetres (measured at most
+// 0.055 m at 12 m/s; with the certified layer throughout, 0.15 m at 10 m/s). Above 15 m/s the
+// certified authority kbar_sw is about the disturbance itself and the peak grows (0.10 m at
+// 15 m/s, 0.22 m at 19 m/s, docs/governor.md).
+TEST(DisturbanceRejection, AColdStartRackOffsetStaysWithinCentimetres) {
+  const int cases = testing::property_cases(6);
+  for (int index = 0; index < cases; ++index) {
+    const auto seed = testing::case_seed(index);
+    testing::Random random(seed + 71);
+    const double speed = random.uniform(8.0, 12.0);
+    const double offset = (random.coin() ? 1.0 : -1.0) * random.uniform(0.002, 0.005);
+    SCOPED_TRACE(testing::seed_message(seed) + " v=" + std::to_string(speed) +
+                 " offset=" + std::to_string(offset));
+    const Scenario scenario = load_scenario(
+        (testing::source_dir() / "scenarios/lane_change_15.yaml").string(),
+        {"path={type: straight, start: [-40.0, 0.0], heading_rad: 0.0, length_m: 400.0}",
+         "speed.initial_mps=" + std::to_string(speed), "simulation.duration_s=12",
+         "simulation.noise_seed=" + std::to_string(index + 1),
+         "simulation.steering_offset_rad=" + std::to_string(offset)});
+    const RunResult result = run_scenario(scenario);
+    ASSERT_EQ(result.simulation.status, Status::ok);
+    EXPECT_LE(result.metrics.max_abs_rear_error_m, 0.07);
+    EXPECT_EQ(result.metrics.held_rate_violations + result.metrics.held_acceleration_violations +
+                  result.metrics.angle_violations,
+              0);
+  }
 }
 
 }  // namespace

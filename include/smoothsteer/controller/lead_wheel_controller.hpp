@@ -22,6 +22,7 @@
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/dynamics_inversion.hpp"
 #include "smoothsteer/controller/feedforward.hpp"
+#include "smoothsteer/controller/near_law_layer.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/controller/trailer_chain.hpp"
@@ -61,10 +62,13 @@ class LeadWheelController final : public SteeringController {
 
   //! Real-time parameter change (gain scheduling, docs/tuning.md): noexcept, no allocation.
   //! Keeps the commanded delta_veh continuous by re-mapping delta_1 to the new lambda_1
-  //! (tan(delta_veh)/lambda_veh = tan(delta_1)/lambda_1), keeps delta_2..delta_n, and clamps
-  //! every chain angle into the new invariant sets (a shrinking set can move delta_veh by at most
-  //! the amount it shrank). Returns invalid_input, leaving the controller unchanged, if the
-  //! parameters are invalid (is_valid()) or change the order n.
+  //! (tan(delta_veh)/lambda_veh = tan(delta_1)/lambda_1); for n >= 2 it also re-solves delta_2 so
+  //! that d delta_veh / ds is unchanged (the command stays C^1 across a retune), and it keeps
+  //! delta_3..delta_n. No chain angle is clamped into the new invariant sets, since a jump of the
+  //! state would be a kink in delta_veh: an angle left outside a shrunken set returns under the
+  //! chain's own flow (integrate_chain). kappa_ff is clamped to the new kbar_ff. Returns
+  //! invalid_input, leaving the controller unchanged, if the parameters are invalid (is_valid())
+  //! or change the order n.
   Status retune(const ControllerParameters& parameters) noexcept;
 
   //! Evaluation hook: a matched disturbance kappa_d added to the lead-wheel curvature, i.e. the
@@ -166,6 +170,7 @@ class LeadWheelController final : public SteeringController {
   double feedforward_envelope_ = 0.0;  //!< decaying max of |kappa_ff| (the far law's authority)
   double far_share_ = 0.0;             //!< weight of the far law in kappa_sw, in [0, 1]
   double heading_envelope_ = 0.0;      //!< decaying max of the lead wheel's |heading error| [rad]
+  NearLawLayer near_layer_{};          //!< the near law's boundary layer under the governor
   double previous_speed_ = -1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;
