@@ -92,11 +92,15 @@ void read_law_options(ConfigSection& c, ControllerParameters& p, const VehiclePa
   ConfigSection governor = c.section("governor");
   SteeringGovernor& g = p.governor;
   g.enabled = governor.boolean("enabled", defaults.governor.enabled);
-  g.law_length_m = governor.number("law_length_m", defaults.governor.law_length_m, {0.0, 1000.0});
-  g.max_longitudinal_acceleration_mps2 =
-      governor.number("max_longitudinal_acceleration_mps2",
-                      defaults.governor.max_longitudinal_acceleration_mps2, {0.0, 50.0});
-  g.margin = governor.number("margin", defaults.governor.margin, {0.0, 0.5, true, false});
+  // The numbers' ranges are the field table's (parameter_fields.cpp): one statement of each rule.
+  const auto table_number = [&governor](const std::string& key, double fallback) {
+    const FieldRange r = find_parameter_field("governor." + key)->range;
+    return governor.number(key, fallback, Range{r.min, r.max, r.min_open, r.max_open});
+  };
+  g.law_length_m = table_number("law_length_m", defaults.governor.law_length_m);
+  g.max_longitudinal_acceleration_mps2 = table_number(
+      "max_longitudinal_acceleration_mps2", defaults.governor.max_longitudinal_acceleration_mps2);
+  g.margin = table_number("margin", defaults.governor.margin);
   if (g.enabled) {
     g.max_steering_rate_radps = vehicle.max_steering_rate_radps;
     g.max_steering_acceleration_radps2 = vehicle.max_steering_acceleration_radps2;
