@@ -63,7 +63,7 @@ class NearLawLayer {
     previous_curvature_ = path_curvature;
     has_previous_ = true;
   }
-  //! The path's activity: a decaying envelope of the target's lateral jerk [m/s^3].
+  //! The path's activity: a decaying envelope of its lateral jerk at the lead wheel [m/s^3].
   double activity_mps3() const noexcept { return activity_mps3_; }
   //! The near law's boundary layer for the certified layer epsilon and authority kbar_sw at
   //! speed_mps: epsilon while the path moves, the steady law's l kbar_sw / 2 (at most epsilon)
