@@ -138,6 +138,12 @@ void bind_vehicle(py::module_& m) {
       .def_readwrite("rear_tire", &O::rear_tire)
       .def_readwrite("gravity_mps2", &O::gravity_mps2)
       .def_readwrite("min_speed_mps", &O::min_speed_mps)
+      .def_readwrite("max_steering_offset_rad", &O::max_steering_offset_rad,
+                     "bound of the steering-offset state (0: off)")
+      .def_readwrite("steering_offset_process_std_radps", &O::steering_offset_process_std_radps)
+      .def_readwrite("offset_learning_min_speed_mps", &O::offset_learning_min_speed_mps)
+      .def_readwrite("offset_learning_max_lateral_acceleration_mps2",
+                     &O::offset_learning_max_lateral_acceleration_mps2)
       .def_readwrite("fault_gate", &O::fault_gate, "SideSlipFaultGate")
       .def_static("from_vehicle", &O::from_vehicle, py::arg("vehicle"),
                   py::arg("cornering_stiffness_scale") = 1.0, py::arg("mass_scale") = 1.0,
@@ -178,6 +184,8 @@ void bind_outputs(py::module_& m) {
       .def_readonly("side_slip_rad", &D::side_slip_rad, "observer's beta at the CG")
       .def_readonly("lateral_velocity_mps", &D::lateral_velocity_mps, "observer's vy")
       .def_readonly("yaw_rate_radps", &D::yaw_rate_radps, "observer's filtered r")
+      .def_readonly("steering_offset_rad", &D::steering_offset_rad,
+                    "observer's steering offset: road wheels minus measured angle")
       .def_readonly("observer_status", &D::observer_status)
       .def_readonly("estimate_trusted", &D::estimate_trusted,
                     "False: saturated or uncorrected; the law got beta_r = 0")
@@ -306,6 +314,8 @@ void bind_system(py::module_& m) {
            "command), a slip sensor's beta_r [rad] and how old the pose is [s] (localization "
            "latency, 0 <= pose_age_s <= 0.5; the controller carries the pose forward over it). "
            "Returns a SteeringSystemOutput; raises ControllerError on an error status.")
+      .def("forget_steering_offset", &SteeringSystem::forget_steering_offset,
+           "The observer's steering offset back to 0 (reset() keeps it)")
       .def(
           "reset",
           [](SteeringSystem& system, double angle) {

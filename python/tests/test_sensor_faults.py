@@ -61,3 +61,31 @@ def test_reset_refuses_what_is_no_steering_angle(angle):
     with pytest.raises(ss.ControllerError, match="invalid_input"):
         system.reset(angle)
     system.reset(0.3)  # beyond the certified set but a steering angle: approached, not refused
+
+
+def test_steering_offset_is_learned_reported_kept_and_forgotten():
+    # The car drives straight (gyro and accelerometer read 0) while its angle sensor reads
+    # 0.01 rad: the road wheels steer 0.01 rad less than measured.
+    system = example_system()
+
+    def straight(steps, start=0):
+        out = None
+        for k in range(start, start + steps):
+            out = system.update((12.0 * 0.02 * k, 0.0), 0.0, 12.0, yaw_rate_radps=0.0,
+                                lateral_acceleration_mps2=0.0, period_s=0.02,
+                                steering_angle_rad=0.01)
+        return out
+
+    out = straight(150)
+    assert out.side_slip.steering_offset_rad == pytest.approx(-0.01, abs=2e-3)
+    assert abs(out.side_slip.rear_axle_side_slip_rad) < 1e-3
+    system.reset(0.0)
+    assert straight(1, start=150).side_slip.steering_offset_rad == pytest.approx(-0.01, abs=2e-3)
+    system.forget_steering_offset()
+    # Below the learning speed the offset stays where forget_steering_offset() put it.
+    slow = system.update((36.0, 0.0), 0.0, 2.5, yaw_rate_radps=0.0, lateral_acceleration_mps2=0.0,
+                         period_s=0.02, steering_angle_rad=0.01)
+    assert slow.side_slip.steering_offset_rad == 0.0
+    observer = ss.SideSlipObserverParameters(max_steering_offset_rad=0.3)
+    with pytest.raises(ValueError, match="max_steering_offset_rad"):
+        observer.validate()

@@ -299,6 +299,11 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   estimation.yaw_rate_noise_std_radps = slip.number("yaw_rate_noise_std_radps", 0.0, {0.0, 1.0});
   estimation.lateral_acceleration_noise_std_mps2 =
       slip.number("lateral_acceleration_noise_std_mps2", 0.0, {0.0, 10.0});
+  estimation.max_steering_offset_rad =
+      slip.number("max_steering_offset_rad", estimation.max_steering_offset_rad, {0.0, 0.2});
+  estimation.steering_offset_process_std_radps =
+      slip.number("steering_offset_process_std_radps", estimation.steering_offset_process_std_radps,
+                  {0.0, 0.1});
   slip.finish();
   sim.store("side_slip", slip.resolved());
   sim.finish();

@@ -196,7 +196,9 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
     // a side force is) on time, whoever reads them; their noise only for the observer.
     input.yaw_rate_radps = state.yaw_rate_radps;
     if (parameters.gyro_bias_radps != 0.0) input.yaw_rate_radps += parameters.gyro_bias_radps;
-    const VehicleState rates = vehicle.derivative(state, actuator.angle(), input.acceleration_mps2);
+    // The accelerometer reads the plant: its wheels steer with the rack offset.
+    const VehicleState rates = vehicle.derivative(
+        state, detail::plant_steering_angle(plant, actuator.angle()), input.acceleration_mps2);
     input.lateral_acceleration_mps2 = rates.vy_mps + state.vx_mps * state.yaw_rate_radps;
     if (parameters.side_force.active()) {
       input.lateral_acceleration_mps2 += detail::body_acceleration(plant, state, t, false).lateral;

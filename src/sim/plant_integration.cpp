@@ -23,12 +23,6 @@ namespace {
 
 using PlantArray = std::array<double, VehicleState::size>;
 
-double effective(const PlantContext& c, double delta) noexcept {
-  delta += c.steering_offset_rad;
-  if (c.plant_disturbance == 0.0) return delta;
-  return disturbed_steering_angle(delta, c.model.parameters().wheelbase_m(), c.plant_disturbance);
-}
-
 VehicleState derivative(const PlantContext& c, const VehicleState& s, double delta,
                         double acceleration, double t) noexcept {
   if (c.model_evaluations) ++*c.model_evaluations;
@@ -75,13 +69,13 @@ void fixed_substep(const PlantContext& c, double time, double delayed, VehicleSt
   const double h = c.substep_s;
   const VehicleParameters& car = c.model.parameters();
   SteeringActuator& actuator = c.actuator;
-  const double delta_start = effective(c, actuator.angle());
+  const double delta_start = plant_steering_angle(c, actuator.angle());
   if (actuator.parameters().ideal) {
     actuator.set_state({delayed, delayed, delayed});
   } else {
     actuator.advance(delayed);
   }
-  const double delta_end = effective(c, actuator.angle());
+  const double delta_end = plant_steering_angle(c, actuator.angle());
   const double acceleration = c.speed.acceleration(time + 0.5 * h);
   const VehicleState before = state;
   state = rk4_step(c, state, time, h, actuator.parameters().ideal ? delta_end : delta_start,
@@ -114,8 +108,8 @@ void solve_piece(const PlantContext& c, double origin, double from, double to,
     PlantArray x;
     std::copy_n(y.begin(), x.size(), x.begin());
     const VehicleState s = VehicleState::from_array(x);
-    const VehicleState d =
-        derivative(c, s, effective(c, delta_of(t - origin)), acceleration, 0.5 * (from + to));
+    const VehicleState d = derivative(c, s, plant_steering_angle(c, delta_of(t - origin)),
+                                      acceleration, 0.5 * (from + to));
     const PlantArray dx = d.to_array();
     std::copy(dx.begin(), dx.end(), dydt.begin());
     dydt.back() = rear_axle_speed(s, d, lr);
@@ -197,10 +191,16 @@ void solve_adaptive(const PlantContext& c, double t0, double h, const DeltaOf& d
     }
   }
   solve_piece(c, t0, t0 + from, t0 + h, delta_of, state, distance);
-  c.model.constrain(state, effective(c, delta_of(h)));
+  c.model.constrain(state, plant_steering_angle(c, delta_of(h)));
 }
 
 }  // namespace
+
+double plant_steering_angle(const PlantContext& c, double delta) noexcept {
+  delta += c.steering_offset_rad;
+  if (c.plant_disturbance == 0.0) return delta;
+  return disturbed_steering_angle(delta, c.model.parameters().wheelbase_m(), c.plant_disturbance);
+}
 
 BodyAcceleration body_acceleration(const PlantContext& c, const VehicleState& s, double t,
                                    bool with_crossfall) noexcept {

@@ -40,6 +40,10 @@ struct PlantContext {
   }
 };
 
+//! The angle the plant's road wheels steer for the actuator's `delta`: with the rack offset and
+//! the matched disturbance of `c`.
+double plant_steering_angle(const PlantContext& c, double delta) noexcept;
+
 //! What the crossfall (with_crossfall) and the side force of `c` add to the body's lateral
 //! acceleration [m/s^2] and yaw acceleration [rad/s^2] at time t, faded out with the model's
 //! blend to the kinematic model at low speed (a car at rest on a cross slope does not slide).

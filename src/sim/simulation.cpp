@@ -175,6 +175,15 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
     return bad("side_slip.lateral_acceleration_noise_std_mps2",
                side_slip.lateral_acceleration_noise_std_mps2, "must be in [0, 10] m/s^2");
   }
+  if (!(side_slip.max_steering_offset_rad >= 0.0 && side_slip.max_steering_offset_rad <= 0.2)) {
+    return bad("side_slip.max_steering_offset_rad", side_slip.max_steering_offset_rad,
+               "must be in [0, 0.2] rad");
+  }
+  if (!(side_slip.steering_offset_process_std_radps >= 0.0 &&
+        side_slip.steering_offset_process_std_radps <= 0.1)) {
+    return bad("side_slip.steering_offset_process_std_radps",
+               side_slip.steering_offset_process_std_radps, "must be in [0, 0.1] rad/sqrt(s)");
+  }
   return std::nullopt;
 }
 
@@ -202,6 +211,8 @@ SteeringSystemParameters steering_system_parameters(const SideSlipEstimation& sl
   system.observer.lateral_acceleration_noise_std_mps2 =
       std::max(system.observer.lateral_acceleration_noise_std_mps2,
                slip.lateral_acceleration_noise_std_mps2);
+  system.observer.max_steering_offset_rad = slip.max_steering_offset_rad;
+  system.observer.steering_offset_process_std_radps = slip.steering_offset_process_std_radps;
   return system;
 }
 

@@ -159,6 +159,7 @@ double SteeringSystem::rear_axle_side_slip(const SteeringSystemInput& input,
   slip.side_slip_rad = next.side_slip_rad();
   slip.lateral_velocity_mps = next.lateral_velocity_mps();
   slip.yaw_rate_radps = next.yaw_rate_radps();
+  slip.steering_offset_rad = next.steering_offset_rad();
   slip.sensors = next.health();
   slip.estimate_trusted = slip.observer_status == Status::ok && slip.sensors.trusted;
   // Not trusted (saturated, or the model's prediction alone): the kinematic assumption.

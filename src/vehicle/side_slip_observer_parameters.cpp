@@ -53,6 +53,25 @@ std::optional<Violation> SideSlipObserverParameters::first_violation() const noe
   }
   check.require(std::isfinite(min_speed_mps) && min_speed_mps >= 0.5 && min_speed_mps <= 50.0,
                 "min_speed_mps", min_speed_mps, "must be in [0.5, 50] m/s");
+  check.require(std::isfinite(max_steering_offset_rad) && max_steering_offset_rad >= 0.0 &&
+                    max_steering_offset_rad <= 0.2,
+                "max_steering_offset_rad", max_steering_offset_rad,
+                "must be in [0, 0.2] rad (0: no offset state)");
+  check.require(std::isfinite(steering_offset_process_std_radps) &&
+                    steering_offset_process_std_radps >= 0.0 &&
+                    steering_offset_process_std_radps <= 0.1,
+                "steering_offset_process_std_radps", steering_offset_process_std_radps,
+                "must be in [0, 0.1] rad/sqrt(s)");
+  check.require(std::isfinite(offset_learning_min_speed_mps) &&
+                    offset_learning_min_speed_mps >= min_speed_mps &&
+                    offset_learning_min_speed_mps <= 100.0,
+                "offset_learning_min_speed_mps", offset_learning_min_speed_mps,
+                "must be in [min_speed_mps, 100] m/s");
+  check.require(std::isfinite(offset_learning_max_lateral_acceleration_mps2) &&
+                    offset_learning_max_lateral_acceleration_mps2 > 0.0 &&
+                    offset_learning_max_lateral_acceleration_mps2 <= 20.0,
+                "offset_learning_max_lateral_acceleration_mps2",
+                offset_learning_max_lateral_acceleration_mps2, "must be in (0, 20] m/s^2");
   check.require(positive_finite(gravity_mps2) && gravity_mps2 <= 100.0, "gravity_mps2",
                 gravity_mps2, "must be finite, > 0 and <= 100");
   check.require(

@@ -267,10 +267,14 @@ TEST(SensorImperfections, TheObserverReadsTheOffsetAngleAndTheBiasedGyro) {
   const VehicleParameters car;
   const DynamicSingleTrack plant(car);
   const Path path = Path::straight_line({0, 0}, 0.0, 2000.0);
-  auto observed = [&](double angle_offset, double gyro_bias) {
+  struct Observed {
+    double slip, yaw_rate, steering_offset;
+  };
+  auto observed = [&](double angle_offset, double gyro_bias, double max_offset = 0.02) {
     SimulationParameters sim;
     sim.duration_s = 3.0;
     sim.side_slip.source = SideSlipSource::observer;
+    sim.side_slip.max_steering_offset_rad = max_offset;
     sim.steering_angle_sensor_offset_rad = angle_offset;
     sim.gyro_bias_radps = gyro_bias;
     testing::ConstantSteering controller(0.0);
@@ -278,15 +282,21 @@ TEST(SensorImperfections, TheObserverReadsTheOffsetAngleAndTheBiasedGyro) {
     const SimulationResult result = simulate(path, plant, ActuatorParameters{},
                                              SpeedProfile{15, 15, 0, 0}, sim, {{0, 0}, 0}, system);
     EXPECT_EQ(result.trace.back().yaw_rate_radps, 0.0);  // the car itself drives straight
-    return std::pair{result.trace.back().rear_side_slip_input_rad,
-                     system.observer()->yaw_rate_radps()};
+    return Observed{result.trace.back().rear_side_slip_input_rad,
+                    system.observer()->yaw_rate_radps(), system.observer()->steering_offset_rad()};
   };
-  const auto [clean_slip, clean_rate] = observed(0.0, 0.0);
-  EXPECT_EQ(clean_slip, 0.0);
-  EXPECT_EQ(clean_rate, 0.0);
-  // Told the wheels are steered, the observer believes some rear slip on a straight drive.
-  EXPECT_GT(std::abs(observed(0.01, 0.0).first), 1e-3);
-  EXPECT_GT(observed(0.0, 0.01).second, 0.002);  // it follows the gyro's bias in part
+  const Observed clean = observed(0.0, 0.0);
+  EXPECT_EQ(clean.slip, 0.0);
+  EXPECT_EQ(clean.yaw_rate, 0.0);
+  EXPECT_EQ(clean.steering_offset, 0.0);
+  // Told the wheels are steered 0.01 rad while the car drives straight, the observer learns a
+  // steering offset of -0.01 rad and keeps the rear slip at 0; without the offset state it
+  // believes a rear slip of several mrad.
+  const Observed offset = observed(0.01, 0.0);
+  EXPECT_NEAR(offset.steering_offset, -0.01, 5e-4);
+  EXPECT_LT(std::abs(offset.slip), 2e-4);
+  EXPECT_GT(std::abs(observed(0.01, 0.0, 0.0).slip), 1e-3);
+  EXPECT_GT(observed(0.0, 0.01).yaw_rate, 0.002);  // it follows the gyro's bias in part
 }
 
 TEST(ImperfectionValidation, EveryOutOfRangeValueIsRefusedNamingItsField) {

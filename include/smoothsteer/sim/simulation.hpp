@@ -65,6 +65,11 @@ struct SideSlipEstimation {
   //! its defaults).
   double yaw_rate_noise_std_radps = 0.0;
   double lateral_acceleration_noise_std_mps2 = 0.0;
+  //! The observer's steering-offset state: its bound (0: off) and random walk
+  //! (SideSlipObserverParameters).
+  double max_steering_offset_rad = SideSlipObserverParameters{}.max_steering_offset_rad;
+  double steering_offset_process_std_radps =
+      SideSlipObserverParameters{}.steering_offset_process_std_radps;
 };
 
 struct SimulationParameters {

@@ -132,6 +132,8 @@ struct SideSlipDiagnostics {
   double side_slip_rad = 0.0;            //!< observer's beta at the CG [rad] (0 without one)
   double lateral_velocity_mps = 0.0;     //!< observer's vy [m/s]
   double yaw_rate_radps = 0.0;           //!< observer's filtered r [rad/s]
+  //! observer's steering offset: the road wheels' angle minus the measured one [rad]
+  double steering_offset_rad = 0.0;
   //! The observer's update() status (ok without an observer). Not ok: beta_r = 0 this period.
   Status observer_status = Status::ok;
   //! False when the observer's estimate is saturated, or no sample has corrected it for a while
@@ -180,7 +182,12 @@ class SteeringSystem {
   //! Restarts the controller at the measured steering angle and the observer from straight
   //! driving. The controller's status (SteeringController::reset): invalid_input for NaN, inf,
   //! |angle| >= pi / 2 or beyond the car's angle limit, and then nothing changes.
+  //! The observer's steering offset, which reset() keeps (the car's rack stays as it is), stays.
   Status reset(double measured_steering_angle_rad = 0.0) noexcept;
+  //! The observer's steering offset back to 0 (a new car, a realigned rack or sensor).
+  void forget_steering_offset() noexcept {
+    if (observer_) observer_->forget_steering_offset();
+  }
   //! Replanning: SteeringController::set_path's contract.
   //! With a domain (SteeringSystemParameters::domain) it also measures the path's demand
   //! (curvature_demand(): O(curvature samples), no allocation).

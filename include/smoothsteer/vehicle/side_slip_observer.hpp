@@ -19,6 +19,15 @@
 //! the vehicle file's lateral Magic Formula (Pacejka; the plant's own curve, scaled to the
 //! believed cornering stiffness) and runs an extended Kalman filter on the same state and
 //! measurements (docs/vehicle_dynamics.md, section 2).
+//! A steering-angle sensor that reads off, or a rack that steers beside its reading, puts a
+//! steering offset delta_o between the measured angle and the road wheels' (a bias the model
+//! would otherwise turn into a wrong slip: 0.01 rad left 0.15 m beside the path). The filter
+//! carries it as a third state, x = (vy, r, delta_o), a slow random walk the wheels steer
+//! through (delta = delta_measured + delta_o). The gyro and the accelerometer make it
+//! observable: in steady driving a_y fixes the axles' force sum and r their moment balance, so
+//! the slip angles, and with them delta, follow. It learns only at speed and in the tires'
+//! linear range (elsewhere the filter considers its uncertainty without changing it), stays
+//! within +-max_steering_offset_rad, and persists across reset() like the car's rack does.
 
 #include <optional>
 #include <string>
@@ -45,7 +54,10 @@ struct SideSlipObserverParameters {
   //! Process noise: std of the unmodelled lateral force per unit mass [m/s^2] and of the
   //! unmodelled yaw acceleration [rad/s^2] (tire nonlinearity, parameter error).
   double lateral_process_std_mps2 = 0.5;
-  double yaw_process_std_radps2 = 0.5;
+  //! The yaw's is what separates a steering offset from a lateral velocity: at 0.5 the moment
+  //! balance counted so little that the offset took 3-5 s to learn (lane change at 10 m/s with
+  //! a 0.01 rad sensor offset: 0.020 m against 0.008 m at 0.1; nominal figures unchanged).
+  double yaw_process_std_radps2 = 0.1;
   ObserverTireModel tire_model = ObserverTireModel::linear;
   //! magic_formula only: the shape of each axle's curve (C, mu, E). Its B is not used: the curve
   //! is scaled so that its slope at zero is the cornering stiffness above, B = C_alpha / (C D),
@@ -55,6 +67,14 @@ struct SideSlipObserverParameters {
   double gravity_mps2 = 9.81;  //!< g [m/s^2], for the static axle loads
   //! Below this speed the model is singular (1/vx); the estimate is kinematic: beta_r = 0 [m/s].
   double min_speed_mps = 2.0;
+  //! The steering offset delta_o: its bound [rad] (0 switches the state off: delta_o = 0), its
+  //! random walk's std [rad/sqrt(s)], and where it learns: at least this speed [m/s], at most
+  //! this measured lateral acceleration [m/s^2] (the tires' linear range, where a wrong
+  //! stiffness in the vehicle file costs least).
+  double max_steering_offset_rad = 0.02;
+  double steering_offset_process_std_radps = 2e-4;
+  double offset_learning_min_speed_mps = 3.0;
+  double offset_learning_max_lateral_acceleration_mps2 = 2.0;
   //! What rejects a bad gyro or accelerometer sample and when the estimate is not trusted
   //! (sensor_fault_gate.hpp).
   SideSlipFaultGate fault_gate;
@@ -88,8 +108,11 @@ class SideSlipObserver {
   //! Validates the parameters (throws std::invalid_argument naming the field).
   explicit SideSlipObserver(const SideSlipObserverParameters& parameters);
 
-  //! Back to straight driving without slip and the initial uncertainty; clears health().
+  //! Back to straight driving without slip and the initial uncertainty; clears health(). The
+  //! steering offset and its uncertainty stay (forget_steering_offset() clears them).
   void reset() noexcept;
+  //! The steering offset back to 0 at its initial uncertainty (a new car, a realigned rack).
+  void forget_steering_offset() noexcept;
   //! One prediction over `period_s` (with the held steering angle of the measurement) and the
   //! corrections with r and a_y that pass the gates (sensor_fault_gate.hpp); restarts from the
   //! kinematic model when the estimate stays saturated or uncorrected. invalid_input for a
@@ -103,6 +126,8 @@ class SideSlipObserver {
   //! beta_r = atan((vy - lr r) / vx): the rear axle's course minus the heading [rad], the input
   //! ControllerInput::rear_axle_side_slip_rad.
   double rear_axle_side_slip_rad() const noexcept { return rear_side_slip_; }
+  //! delta_o: the road wheels' angle minus the measured one [rad], within the bound.
+  double steering_offset_rad() const noexcept { return steering_offset_; }
   const SideSlipObserverParameters& parameters() const noexcept { return parameters_; }
   //! What the gates rejected, and whether the estimate is trusted.
   const SideSlipObserverHealth& health() const noexcept { return health_; }
@@ -119,8 +144,8 @@ class SideSlipObserver {
   SideSlipObserverParameters parameters_;
   SensorPlausibility plausibility_;
   SideSlipObserverHealth health_;
-  double lateral_velocity_ = 0.0, yaw_rate_ = 0.0;
-  double covariance_[2][2]{};
+  double lateral_velocity_ = 0.0, yaw_rate_ = 0.0, steering_offset_ = 0.0;
+  double covariance_[3][3]{};  //!< of (vy, r, delta_o)
   double side_slip_ = 0.0, rear_side_slip_ = 0.0;
   double speed_ = 0.0;
   double previous_steering_ = 0.0;  //!< delta of the last measurement, held over the period
