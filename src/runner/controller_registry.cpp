@@ -282,8 +282,9 @@ std::unique_ptr<SteeringController> make_controller(
   ConfigSection c(section, key_path, file);
   c.set_overridden_keys(std::move(overridden_keys));
   const std::vector<std::string> types = controller_types();
-  if (!c.has("type")) c.fail("type", "is required (e.g. controller: {type: lead_wheel})");
-  const std::string type = c.text("type", "lead_wheel", types);
+  // Without a type (or without the section) the car's own system: one front door, built from
+  // the scenario's vehicle and actuator alone.
+  const std::string type = c.text("type", "steering_system", types);
   ControllerFactory factory;
   {
     Registry& r = registry();

@@ -6,9 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <yaml-cpp/yaml.h>
 
 #include "smoothsteer/runner/scenario.hpp"
 #include "support/source_dir.hpp"
@@ -35,6 +39,31 @@ TEST(CarSystemType, TracksTheRoadsAsTheirOwnBlocks) {
     EXPECT_EQ(car.metrics.held_rate_violations, 0) << name;
     EXPECT_EQ(car.metrics.held_acceleration_violations, 0) << name;
   }
+}
+
+// The default type: a file without a controller section (or a section without a type) runs the
+// car's system, the same run as the explicit type, and says so in its resolved parameters.
+TEST(CarSystemType, IsWhatAFileWithoutAControllerRuns) {
+  const std::string file = testing::source_file("scenarios/roads/roundabout.yaml");
+  YAML::Node without = YAML::LoadFile(file);
+  ASSERT_TRUE(without.remove("controller"));
+  // The copy lives elsewhere: its vehicle file by its absolute path.
+  without["vehicle"]["file"] = testing::source_file("vehicles/passenger_car.yaml");
+  const std::filesystem::path copy =
+      std::filesystem::temp_directory_path() / "smoothsteer_car_system_type_default.yaml";
+  {
+    std::ofstream out(copy);
+    out << YAML::Dump(without) << "\n";
+  }
+  const runner::Scenario scenario = runner::load_scenario(copy.string());
+  std::filesystem::remove(copy);
+  EXPECT_EQ(scenario.parameters["controller"]["type"], "steering_system");
+  const runner::RunResult by_default = runner::run_scenario(scenario);
+  const runner::RunResult explicit_type =
+      runner::run_scenario(runner::load_scenario(file, {kCarSystem}));
+  ASSERT_EQ(by_default.simulation.status, Status::ok);
+  EXPECT_EQ(by_default.metrics.max_abs_rear_error_m, explicit_type.metrics.max_abs_rear_error_m);
+  EXPECT_EQ(by_default.simulation.trace.size(), explicit_type.simulation.trace.size());
 }
 
 std::string error_of(const std::vector<std::string>& overrides) {
