@@ -197,6 +197,7 @@ void bind_outputs(py::module_& m) {
       .def_readonly("steering_rate_radps", &O::steering_rate_radps)
       .def_readonly("steering_acceleration_radps2", &O::steering_acceleration_radps2)
       .def_readonly("derivatives_available", &O::derivatives_available)
+      .def_readonly("pose_age_s", &O::pose_age_s, "the pose's age used: given or estimated")
       .def_readonly("tracking", &O::tracking, "TrackingDiagnostics")
       .def_readonly("side_slip", &O::side_slip, "SideSlipDiagnostics")
       .def_readonly("active_limits", &O::active_limits, "ActiveLimit bits")
@@ -255,6 +256,8 @@ void bind_system(py::module_& m) {
                      "DrivingDomain the controller is certified for (None: no such check)")
       .def_readwrite("certified_max_speed_mps", &P::certified_max_speed_mps,
                      "above it: ActiveLimit.beyond_certified_speed")
+      .def_readwrite("estimate_pose_age", &P::estimate_pose_age,
+                     "estimate the pose's age where update() is not given pose_age_s")
       .def_static("from_vehicle", &P::from_vehicle, py::arg("vehicle"),
                   py::arg("tire_model") = ObserverTireModel::linear)
       .def("validate", &P::validate);

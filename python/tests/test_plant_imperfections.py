@@ -65,13 +65,14 @@ def test_scaled_plant_vehicle_keeps_the_cornering_stiffness_and_scales_the_under
         )
 
 
-def test_a_late_pose_costs_precision_and_the_controller_is_told_nothing():
+def test_a_late_pose_the_controller_is_not_told_of_costs_little():
+    # The simulator delivers the pose 60 ms late and does not say so; the steering system
+    # estimates the age from the gyro (without the estimate: 0.29 m, ten times the nominal).
     _, nominal = ss.run_scenario(LANE_CHANGE)
     late = ss.load_scenario(LANE_CHANGE, {"simulation.pose_latency_s": 0.06})
     _, summary = ss.run_scenario(late)
     assert summary["parameters"]["vehicle"] == nominal["parameters"]["vehicle"]
     assert summary["parameters"]["actuator"] == nominal["parameters"]["actuator"]
-    assert (
-        summary["metrics"]["max_abs_rear_error_m"]
-        > 2.0 * nominal["metrics"]["max_abs_rear_error_m"]
-    )
+    error, on_time = (summary["metrics"]["max_abs_rear_error_m"],
+                      nominal["metrics"]["max_abs_rear_error_m"])
+    assert on_time < error < 2.5 * on_time

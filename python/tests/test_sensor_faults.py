@@ -89,3 +89,14 @@ def test_steering_offset_is_learned_reported_kept_and_forgotten():
     observer = ss.SideSlipObserverParameters(max_steering_offset_rad=0.3)
     with pytest.raises(ValueError, match="max_steering_offset_rad"):
         observer.validate()
+
+
+def test_the_pose_age_is_estimated_unless_given_or_switched_off():
+    # A pose that stops changing ages by a period each period; a given age is taken as it is.
+    system = example_system()
+    out = None
+    for k in range(10):
+        out = system.update((1.0, 0.0), 0.0, 12.0, period_s=0.02)
+    assert out.pose_age_s == pytest.approx(9 * 0.02)
+    assert system.update((1.0, 0.0), 0.0, 12.0, period_s=0.02, pose_age_s=0.05).pose_age_s == 0.05
+    assert ss.SteeringSystemParameters(estimate_pose_age=False).estimate_pose_age is False

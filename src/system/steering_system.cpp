@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
@@ -111,6 +112,7 @@ Status SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
   const Status status = controller_->reset(measured_steering_angle_rad);
   if (status != Status::ok) return status;
   if (observer_) observer_->reset();
+  pose_latency_.restart();
   controller_output_ = {};
   last_command_rad_ = measured_steering_angle_rad;
   return Status::ok;
@@ -178,16 +180,37 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   // Every input is checked before any stage takes it: an error changes no state.
   if (!valid_input(input)) return Status::invalid_input;
   controller_input_.rear_axle_side_slip_rad = rear_axle_side_slip(input, slip);
+  // The pose's age where the input does not give it (pose_latency_estimator.hpp), on a copy
+  // committed with the observer; from the gyro samples the observer's gates let through.
+  PoseLatencyEstimator latency = pose_latency_;
+  if (parameters_.estimate_pose_age) {
+    constexpr std::uint32_t gyro_faults =
+        fault_yaw_rate_dropped | fault_yaw_rate_implausible | fault_yaw_rate_innovation;
+    const bool gyro_usable = observer_ ? (slip.sensors.last_period & gyro_faults) == 0
+                                       : std::isfinite(input.yaw_rate_radps);
+    const bool new_pose =
+        !(input.rear_axle_position.x == last_position_.x &&
+          input.rear_axle_position.y == last_position_.y && input.heading_rad == last_heading_rad_);
+    const double estimate = latency.update(
+        input.heading_rad, new_pose,
+        gyro_usable ? input.yaw_rate_radps : std::numeric_limits<double>::quiet_NaN(),
+        input.period_s, ControllerInput::max_pose_age_s);
+    if (input.pose_age_s == 0.0) controller_input_.pose_age_s = estimate;
+  }
   slip.rear_axle_side_slip_rad = controller_input_.rear_axle_side_slip_rad;
   const Status status = controller_->update(controller_input_, controller_output_);
   if (status != Status::ok) return status;
   if (observer_) std::swap(*observer_, *pending_observer_);
+  pose_latency_ = latency;
+  last_position_ = input.rear_axle_position;
+  last_heading_rad_ = input.heading_rad;
   const ControllerOutput& command = controller_output_;
   last_command_rad_ = command.steering_angle_rad;
   output.steering_angle_rad = command.steering_angle_rad;
   output.steering_rate_radps = command.steering_rate_radps;
   output.steering_acceleration_radps2 = command.steering_acceleration_radps2;
   output.derivatives_available = command.derivatives_available;
+  output.pose_age_s = controller_input_.pose_age_s;
   output.tracking = command.diagnostics;
   output.side_slip = slip;
   const double speed = std::abs(input.speed_mps);

@@ -40,6 +40,7 @@
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/status.hpp"
 #include "smoothsteer/system/driving_domain.hpp"
+#include "smoothsteer/system/pose_latency_estimator.hpp"
 #include "smoothsteer/validation.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
@@ -67,6 +68,10 @@ struct SteeringSystemParameters {
   //! Above this |v| [m/s] the controller's limits are not certified (a gain schedule's last
   //! entry holds): update() sets limit_beyond_certified_speed. +inf: certified at every speed.
   double certified_max_speed_mps = std::numeric_limits<double>::infinity();
+  //! Whether update() estimates the pose's age where the input does not give it
+  //! (SteeringSystemInput::pose_age_s = 0; pose_latency_estimator.hpp): the lag of the pose's
+  //! heading behind the gyro, plus the time since the pose last changed.
+  bool estimate_pose_age = true;
 
   //! The vehicle file's observer (SideSlipObserverParameters::from_vehicle) with `tire_model`.
   static SteeringSystemParameters from_vehicle(
@@ -97,7 +102,8 @@ struct SteeringSystemInput {
   //! A slip sensor's beta_r [rad] (SlipInput::sensor); absent: 0.
   std::optional<double> rear_axle_side_slip_rad;
   //! How old the pose (position and heading) is [s]: ControllerInput::pose_age_s. The other
-  //! signals are taken as current.
+  //! signals are taken as current. 0: not given; the system estimates it
+  //! (SteeringSystemParameters::estimate_pose_age).
   double pose_age_s = 0.0;
 };
 
@@ -149,6 +155,8 @@ struct SteeringSystemOutput {
   double steering_rate_radps = 0.0;           //!< valid if derivatives_available >= 1
   double steering_acceleration_radps2 = 0.0;  //!< valid if derivatives_available >= 2
   int derivatives_available = 0;
+  //! The pose's age the controller carried the pose over [s]: the input's, or the estimate.
+  double pose_age_s = 0.0;
   TrackingDiagnostics tracking;     //!< the controller's diagnostics
   SideSlipDiagnostics side_slip;    //!< the observer's estimate
   std::uint32_t active_limits = 0;  //!< ActiveLimit bits
@@ -222,6 +230,9 @@ class SteeringSystem {
   ControllerOutput controller_output_;  //!< the previous output, as update() expects
   PathCurvatureDemand path_demand_;     //!< of the last path set_path() accepted (with a domain)
   double last_command_rad_ = 0.0;
+  PoseLatencyEstimator pose_latency_;  //!< its lag persists across reset()
+  Vec2 last_position_{};               //!< the pose of the last update, to see a new one
+  double last_heading_rad_ = 0.0;
 };
 
 //! ActiveLimit bits of a lead-wheel controller after its step at |v| = `speed_mps`.
