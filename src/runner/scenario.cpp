@@ -299,11 +299,13 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   estimation.yaw_rate_noise_std_radps = slip.number("yaw_rate_noise_std_radps", 0.0, {0.0, 1.0});
   estimation.lateral_acceleration_noise_std_mps2 =
       slip.number("lateral_acceleration_noise_std_mps2", 0.0, {0.0, 10.0});
+  using Observer = SideSlipObserverParameters;
   estimation.max_steering_offset_rad =
-      slip.number("max_steering_offset_rad", estimation.max_steering_offset_rad, {0.0, 0.2});
+      slip.number("max_steering_offset_rad", estimation.max_steering_offset_rad,
+                  {0.0, Observer::max_steering_offset_bound_rad});
   estimation.steering_offset_process_std_radps =
       slip.number("steering_offset_process_std_radps", estimation.steering_offset_process_std_radps,
-                  {0.0, 0.1});
+                  {0.0, Observer::max_steering_offset_process_std_radps});
   slip.finish();
   sim.store("side_slip", slip.resolved());
   sim.finish();

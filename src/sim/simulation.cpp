@@ -175,12 +175,16 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
     return bad("side_slip.lateral_acceleration_noise_std_mps2",
                side_slip.lateral_acceleration_noise_std_mps2, "must be in [0, 10] m/s^2");
   }
-  if (!(side_slip.max_steering_offset_rad >= 0.0 && side_slip.max_steering_offset_rad <= 0.2)) {
+  // The observer's own bounds (the rule texts state them).
+  using Observer = SideSlipObserverParameters;
+  if (!(side_slip.max_steering_offset_rad >= 0.0 &&
+        side_slip.max_steering_offset_rad <= Observer::max_steering_offset_bound_rad)) {
     return bad("side_slip.max_steering_offset_rad", side_slip.max_steering_offset_rad,
                "must be in [0, 0.2] rad");
   }
   if (!(side_slip.steering_offset_process_std_radps >= 0.0 &&
-        side_slip.steering_offset_process_std_radps <= 0.1)) {
+        side_slip.steering_offset_process_std_radps <=
+            Observer::max_steering_offset_process_std_radps)) {
     return bad("side_slip.steering_offset_process_std_radps",
                side_slip.steering_offset_process_std_radps, "must be in [0, 0.1] rad/sqrt(s)");
   }

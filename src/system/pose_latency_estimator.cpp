@@ -33,25 +33,27 @@ double PoseLatencyEstimator::update(double heading_rad, bool new_pose, double ya
       const double pose_turned = wrap_angle(heading_rad - last_pose_heading_);
       const double span_s = since_pose_s_ + period_s;
       weight_ = forgetting * weight_ + span_s;
+      // Per lag, the weighted variance second - first^2 / weight.
+      std::array<double, max_lags> misfit{};
       for (std::size_t j = 0; j < lags; ++j) {
         const double gyro_turned = turned_at(j) - turned_at(j + span);
         const double rate_difference = (pose_turned - gyro_turned) / span_s;
         first_[j] = forgetting * first_[j] + span_s * rate_difference;
         second_[j] = forgetting * second_[j] + span_s * rate_difference * rate_difference;
-        misfit_[j] = std::max(0.0, second_[j] - first_[j] * first_[j] / weight_);
+        misfit[j] = std::max(0.0, second_[j] - first_[j] * first_[j] / weight_);
       }
       const auto best = static_cast<std::size_t>(
-          std::min_element(misfit_.begin(), misfit_.begin() + static_cast<long>(lags)) -
-          misfit_.begin());
+          std::min_element(misfit.begin(), misfit.begin() + static_cast<long>(lags)) -
+          misfit.begin());
       const std::size_t current = std::min(lag_, lags - 1);
-      if (misfit_[best] < switch_ratio * misfit_[current] &&
-          misfit_[current] - misfit_[best] > min_evidence) {
+      if (misfit[best] < switch_ratio * misfit[current] &&
+          misfit[current] - misfit[best] > min_evidence) {
         lag_ = best;
       }
       // Between the grid lags: the vertex of the parabola through the sums around the lag.
       double refined = static_cast<double>(lag_);
       if (lag_ > 0 && lag_ + 1 < lags) {
-        const double before = misfit_[lag_ - 1], at = misfit_[lag_], after = misfit_[lag_ + 1];
+        const double before = misfit[lag_ - 1], at = misfit[lag_], after = misfit[lag_ + 1];
         const double curvature = before - 2.0 * at + after;
         if (curvature > 0.0) refined += std::clamp(0.5 * (before - after) / curvature, -0.5, 0.5);
       }

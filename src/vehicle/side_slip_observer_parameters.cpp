@@ -8,6 +8,9 @@ namespace smoothsteer {
 namespace {
 
 constexpr const char* owner = "SideSlipObserverParameters";
+// The rule texts below state these bounds.
+static_assert(SideSlipObserverParameters::max_steering_offset_bound_rad == 0.2);
+static_assert(SideSlipObserverParameters::max_steering_offset_process_std_radps == 0.1);
 
 }  // namespace
 
@@ -54,12 +57,12 @@ std::optional<Violation> SideSlipObserverParameters::first_violation() const noe
   check.require(std::isfinite(min_speed_mps) && min_speed_mps >= 0.5 && min_speed_mps <= 50.0,
                 "min_speed_mps", min_speed_mps, "must be in [0.5, 50] m/s");
   check.require(std::isfinite(max_steering_offset_rad) && max_steering_offset_rad >= 0.0 &&
-                    max_steering_offset_rad <= 0.2,
+                    max_steering_offset_rad <= max_steering_offset_bound_rad,
                 "max_steering_offset_rad", max_steering_offset_rad,
                 "must be in [0, 0.2] rad (0: no offset state)");
   check.require(std::isfinite(steering_offset_process_std_radps) &&
                     steering_offset_process_std_radps >= 0.0 &&
-                    steering_offset_process_std_radps <= 0.1,
+                    steering_offset_process_std_radps <= max_steering_offset_process_std_radps,
                 "steering_offset_process_std_radps", steering_offset_process_std_radps,
                 "must be in [0, 0.1] rad/sqrt(s)");
   check.require(std::isfinite(offset_learning_min_speed_mps) &&

@@ -62,8 +62,7 @@ class PoseLatencyEstimator {
   //! difference per second [rad] and times its square [rad^2/s].
   double weight_ = 0.0;
   std::array<double, max_lags> first_{}, second_{};
-  std::array<double, max_lags> misfit_{};  //!< the weighted variance, second - first^2 / weight
-  std::size_t since_pose_ = 0;             //!< periods since the last new pose
+  std::size_t since_pose_ = 0;  //!< periods since the last new pose
   double last_pose_heading_ = 0.0;
   bool has_pose_ = false;
   std::size_t lag_ = 0;        //!< the current grid lag [periods]

@@ -73,6 +73,9 @@ struct SideSlipObserverParameters {
   //! stiffness in the vehicle file costs least).
   double max_steering_offset_rad = 0.02;
   double steering_offset_process_std_radps = 2e-4;
+  //! The largest values the two above accept (validation, scenario keys).
+  static constexpr double max_steering_offset_bound_rad = 0.2;
+  static constexpr double max_steering_offset_process_std_radps = 0.1;
   double offset_learning_min_speed_mps = 3.0;
   double offset_learning_max_lateral_acceleration_mps2 = 2.0;
   //! What rejects a bad gyro or accelerometer sample and when the estimate is not trusted
