@@ -172,4 +172,23 @@ void BM_DefaultControllerSystemUpdateSlipSensor(benchmark::State& state) {
 }
 BENCHMARK(BM_DefaultControllerSystemUpdateSlipSensor);
 
+//! The steering offset compensation alone (steering_offset_compensation.hpp): the actuator's
+//! predicted angle (two exact lag steps), the bias, the deadband and the two limiters, on a
+//! slow sine command with a rack offset learned.
+void BM_SteeringOffsetCompensationUpdate(benchmark::State& state) {
+  SteeringOffsetCompensation compensation(SteeringOffsetCompensationParameters{
+      .actuator = car().actuator,
+      .limits = {.angle_rad = 0.5, .rate_radps = 0.4, .acceleration_radps2 = 8.0},
+      .max_offset_rad = 0.02});
+  compensation.reset(0.0);
+  double t = 0.0, rate = 0.0, acceleration = 0.0;
+  for (auto _ : state) {
+    const double command = 0.05 * std::sin(t);
+    benchmark::DoNotOptimize(
+        compensation.update(command, command, 0.01, 1e-3, 0.02, rate, acceleration));
+    t += 0.02;
+  }
+}
+BENCHMARK(BM_SteeringOffsetCompensationUpdate);
+
 }  // namespace

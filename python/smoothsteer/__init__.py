@@ -74,6 +74,8 @@ from ._smoothsteer import (  # noqa: F401
     Scenario,
     ScheduledController,
     SideForce,
+    SideSlipEstimation,
+    SideSlipSource,
     SimulationParameters,
     SpeedCompensation,
     SlidingSurface,

@@ -45,6 +45,29 @@ void bind_simulation_parameters(py::module_& m) {
       .def_readwrite("yaw_moment_nm", &F::yaw_moment_nm, "[N m], + counter-clockwise")
       .def_readwrite("start_s", &F::start_s, "[s]");
 
+  py::enum_<SideSlipSource>(m, "SideSlipSource")
+      .value("none", SideSlipSource::none, "beta_r = 0: the kinematic assumption")
+      .value("truth", SideSlipSource::truth, "the plant's own slip, an ideal sensor")
+      .value("observer", SideSlipSource::observer, "SideSlipObserver on the simulated sensors");
+
+  using E = SideSlipEstimation;
+  py::class_<E>(m, "SideSlipEstimation",
+                "Where the steering system's beta_r comes from and what its observer believes "
+                "(a scenario's simulation.side_slip); keyword arguments.")
+      .def(py::init(&from_keywords<E>))
+      .def_readwrite("source", &E::source, "SideSlipSource")
+      .def_readwrite("cornering_stiffness_scale", &E::cornering_stiffness_scale,
+                     "the observer's belief / the vehicle file")
+      .def_readwrite("mass_scale", &E::mass_scale, "the same for mass and yaw inertia")
+      .def_readwrite("tire_model", &E::tire_model, "ObserverTireModel")
+      .def_readwrite("yaw_rate_noise_std_radps", &E::yaw_rate_noise_std_radps)
+      .def_readwrite("lateral_acceleration_noise_std_mps2", &E::lateral_acceleration_noise_std_mps2)
+      .def_readwrite("max_steering_offset_rad", &E::max_steering_offset_rad,
+                     "the observer's steering-offset bound (0: off)")
+      .def_readwrite("steering_offset_process_std_radps", &E::steering_offset_process_std_radps)
+      .def_readwrite("compensate_steering_offset", &E::compensate_steering_offset,
+                     "the held command makes up for the learned offset");
+
   using P = SimulationParameters;
   py::class_<P>(m, "SimulationParameters",
                 "A scenario's simulation block (docs/simulation.md): disturbances, model error "
@@ -70,6 +93,7 @@ void bind_simulation_parameters(py::module_& m) {
       .def_readwrite("position_noise_std_m", &P::position_noise_std_m)
       .def_readwrite("heading_noise_std_rad", &P::heading_noise_std_rad)
       .def_readwrite("noise_seed", &P::noise_seed)
+      .def_readwrite("side_slip", &P::side_slip, "SideSlipEstimation")
       .def("validation_error", &P::validation_error,
            "'' when valid, else the message naming the field, value and rule.")
       .def("validate", &P::validate, "Raises ValueError naming the field, value and rule.");

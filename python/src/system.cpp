@@ -198,6 +198,10 @@ void bind_outputs(py::module_& m) {
       .def_readonly("steering_acceleration_radps2", &O::steering_acceleration_radps2)
       .def_readonly("derivatives_available", &O::derivatives_available)
       .def_readonly("pose_age_s", &O::pose_age_s, "the pose's age used: given or estimated")
+      .def_readonly("applied_steering_offset_rad", &O::applied_steering_offset_rad,
+                    "the steering offset the held command makes up for (wheels = command + it)")
+      .def_readonly("steering_angle_sensor_bias_rad", &O::steering_angle_sensor_bias_rad,
+                    "the measured angle's bias against the actuator's predicted angle")
       .def_readonly("tracking", &O::tracking, "TrackingDiagnostics")
       .def_readonly("side_slip", &O::side_slip, "SideSlipDiagnostics")
       .def_readonly("active_limits", &O::active_limits, "ActiveLimit bits")
@@ -258,6 +262,11 @@ void bind_system(py::module_& m) {
                      "above it: ActiveLimit.beyond_certified_speed")
       .def_readwrite("estimate_pose_age", &P::estimate_pose_age,
                      "estimate the pose's age where update() is not given pose_age_s")
+      .def_readwrite("actuator", &P::actuator,
+                     "ActuatorParameters the command is held through (None: no offset "
+                     "compensation)")
+      .def_readwrite("compensate_steering_offset", &P::compensate_steering_offset,
+                     "the held command makes up for the observer's steering offset")
       .def_static("from_vehicle", &P::from_vehicle, py::arg("vehicle"),
                   py::arg("tire_model") = ObserverTireModel::linear)
       .def("validate", &P::validate);

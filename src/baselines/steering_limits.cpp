@@ -2,27 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "baseline_common.hpp"
 
 namespace smoothsteer {
-
-std::optional<Violation> SteeringLimits::first_violation() const noexcept {
-  RuleChecker check("SteeringLimits");
-  check.require(positive_finite(angle_rad) && angle_rad < std::numbers::pi / 2.0, "angle_rad",
-                angle_rad, "must be in (0, pi/2)");
-  check.require_positive({{"rate_radps", rate_radps}});
-  check.require(!std::isnan(acceleration_radps2) && acceleration_radps2 > 0.0,
-                "acceleration_radps2", acceleration_radps2, "must be > 0 (+inf: no limit)");
-  return check.first();
-}
-
-double SaturationStatistics::limited_fraction() const noexcept {
-  if (updates == 0) return 0.0;
-  return std::min(1.0, static_cast<double>(limited) / static_cast<double>(updates));
-}
 
 SaturatedController::SaturatedController(std::unique_ptr<SteeringController> inner,
                                          const SteeringLimits& limits, std::string name)

@@ -306,6 +306,8 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   estimation.steering_offset_process_std_radps =
       slip.number("steering_offset_process_std_radps", estimation.steering_offset_process_std_radps,
                   {0.0, Observer::max_steering_offset_process_std_radps});
+  estimation.compensate_steering_offset =
+      slip.boolean("compensate_steering_offset", estimation.compensate_steering_offset);
   slip.finish();
   sim.store("side_slip", slip.resolved());
   sim.finish();
@@ -405,7 +407,8 @@ SimulationResult simulate_scenario(const Scenario& s, SteeringController& contro
   const std::unique_ptr<VehicleModel> model = make_vehicle_model(s);
   // The side-slip observer believes the scenario's vehicle, not the plant's.
   s.simulation.validate();
-  SteeringSystem system(controller, steering_system_parameters(s.simulation.side_slip, s.vehicle));
+  SteeringSystem system(controller,
+                        steering_system_parameters(s.simulation.side_slip, s.vehicle, s.actuator));
   return s.plan ? simulate(*s.plan, *model, s.actuator, s.speed, s.simulation, s.start, system,
                            observer)
                 : simulate(*s.path, *model, s.actuator, s.speed, s.simulation, s.start, system,

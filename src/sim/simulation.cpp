@@ -200,8 +200,11 @@ void SimulationParameters::validate() const {
 }
 
 SteeringSystemParameters steering_system_parameters(const SideSlipEstimation& slip,
-                                                    const VehicleParameters& vehicle) {
+                                                    const VehicleParameters& vehicle,
+                                                    const ActuatorParameters& actuator) {
   SteeringSystemParameters system;
+  system.actuator = actuator;
+  system.compensate_steering_offset = slip.compensate_steering_offset;
   system.slip_input = slip.source == SideSlipSource::none    ? SlipInput::kinematic
                       : slip.source == SideSlipSource::truth ? SlipInput::sensor
                                                              : SlipInput::observer;
@@ -248,8 +251,8 @@ SimulationResult drive_with_system(const Track& track, const VehicleModel& vehic
                                    const SimulationParameters& parameters, const Pose2& start,
                                    SteeringController& controller, const TraceObserver& observer) {
   parameters.validate();
-  SteeringSystem system(controller,
-                        steering_system_parameters(parameters.side_slip, vehicle.parameters()));
+  SteeringSystem system(
+      controller, steering_system_parameters(parameters.side_slip, vehicle.parameters(), actuator));
   return simulate(track, vehicle, actuator, speed, parameters, start, system, observer);
 }
 

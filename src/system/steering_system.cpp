@@ -106,11 +106,40 @@ void SteeringSystem::set_up(const SteeringSystemParameters& parameters) {
     observer_.emplace(parameters_.observer);
     pending_observer_.emplace(parameters_.observer);
   }
+  // The compensation holds the command to the limits the lead wheel's governor certifies.
+  if (parameters_.compensate_steering_offset && parameters_.actuator && observer_ && lead_wheel_ &&
+      parameters_.observer.max_steering_offset_rad > 0.0) {
+    const SteeringGovernor& governor = lead_wheel_->parameters().governor;
+    const SteeringLimits limits{.angle_rad = governor.max_steering_angle_rad,
+                                .rate_radps = governor.max_steering_rate_radps,
+                                .acceleration_radps2 = governor.max_steering_acceleration_radps2};
+    if (limits.is_valid() && std::isfinite(limits.rate_radps)) {
+      compensation_.emplace(SteeringOffsetCompensationParameters{
+          .actuator = *parameters_.actuator,
+          .limits = limits,
+          .max_offset_rad = parameters_.observer.max_steering_offset_rad});
+    }
+  }
+}
+
+void SteeringSystem::forget_steering_offset() noexcept {
+  if (observer_) observer_->forget_steering_offset();
+  if (compensation_) compensation_->forget();
 }
 
 Status SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
-  const Status status = controller_->reset(measured_steering_angle_rad);
+  // With the compensation the controller's chain starts where the road wheels are.
+  double chain_angle = measured_steering_angle_rad;
+  if (compensation_ && std::isfinite(measured_steering_angle_rad)) {
+    const double bound = compensation_->parameters().limits.angle_rad;
+    chain_angle = compensation_->wheels_from_measured(measured_steering_angle_rad);
+    if (std::abs(measured_steering_angle_rad) <= bound) {
+      chain_angle = std::clamp(chain_angle, -bound, bound);
+    }
+  }
+  const Status status = controller_->reset(chain_angle);
   if (status != Status::ok) return status;
+  if (compensation_) compensation_->reset(measured_steering_angle_rad);
   if (observer_) observer_->reset();
   pose_latency_.restart();
   controller_output_ = {};
@@ -162,6 +191,7 @@ double SteeringSystem::rear_axle_side_slip(const SteeringSystemInput& input,
   slip.lateral_velocity_mps = next.lateral_velocity_mps();
   slip.yaw_rate_radps = next.yaw_rate_radps();
   slip.steering_offset_rad = next.steering_offset_rad();
+  slip.steering_offset_std_rad = next.steering_offset_std_rad();
   slip.sensors = next.health();
   slip.estimate_trusted = slip.observer_status == Status::ok && slip.sensors.trusted;
   // Not trusted (saturated, or the model's prediction alone): the kinematic assumption.
@@ -205,11 +235,20 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   last_position_ = input.rear_axle_position;
   last_heading_rad_ = input.heading_rad;
   const ControllerOutput& command = controller_output_;
-  last_command_rad_ = command.steering_angle_rad;
   output.steering_angle_rad = command.steering_angle_rad;
   output.steering_rate_radps = command.steering_rate_radps;
   output.steering_acceleration_radps2 = command.steering_acceleration_radps2;
   output.derivatives_available = command.derivatives_available;
+  if (compensation_) {
+    output.steering_angle_rad = compensation_->update(
+        command.steering_angle_rad, input.steering_angle_rad, slip.steering_offset_rad,
+        slip.steering_offset_std_rad, input.period_s, output.steering_rate_radps,
+        output.steering_acceleration_radps2);
+    output.derivatives_available = 2;
+    output.applied_steering_offset_rad = compensation_->applied_offset_rad();
+    output.steering_angle_sensor_bias_rad = compensation_->sensor_bias_rad();
+  }
+  last_command_rad_ = output.steering_angle_rad;
   output.pose_age_s = controller_input_.pose_age_s;
   output.tracking = command.diagnostics;
   output.side_slip = slip;

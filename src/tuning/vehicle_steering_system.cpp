@@ -207,6 +207,7 @@ SteeringSystemParameters system_parameters(const VehicleDescription& car,
   SteeringSystemParameters system =
       SteeringSystemParameters::from_vehicle(car.vehicle, options.observer_tire_model);
   system.slip_input = options.slip_input;
+  system.actuator = car.actuator;
   return system;
 }
 

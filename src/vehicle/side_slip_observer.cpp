@@ -211,6 +211,10 @@ void SideSlipObserver::forget_steering_offset() noexcept {
   covariance_[2][2] = initial_std * initial_std;
 }
 
+double SideSlipObserver::steering_offset_std_rad() const noexcept {
+  return std::sqrt(std::max(covariance_[2][2], 0.0));
+}
+
 void SideSlipObserver::reset_estimate() noexcept {
   lateral_velocity_ = yaw_rate_ = side_slip_ = rear_side_slip_ = speed_ = 0.0;
   previous_steering_ = 0.0;

@@ -1,5 +1,5 @@
 // The second-order limiter of the comparison controllers (SteeringSaturator,
-// src/baselines/second_order_limiter.cpp): on random raw commands, limits and periods its held
+// src/controller/second_order_limiter.cpp): on random raw commands, limits and periods its held
 // output keeps the angle, rate and acceleration limits differenced at the actual periods; a
 // command that keeps them passes unchanged; a step target is reached time-optimally without
 // overshoot; the statistics count every clamp.

@@ -278,7 +278,8 @@ TEST(SensorImperfections, TheObserverReadsTheOffsetAngleAndTheBiasedGyro) {
     sim.steering_angle_sensor_offset_rad = angle_offset;
     sim.gyro_bias_radps = gyro_bias;
     testing::ConstantSteering controller(0.0);
-    SteeringSystem system(controller, steering_system_parameters(sim.side_slip, car));
+    SteeringSystem system(controller,
+                          steering_system_parameters(sim.side_slip, car, ActuatorParameters{}));
     const SimulationResult result = simulate(path, plant, ActuatorParameters{},
                                              SpeedProfile{15, 15, 0, 0}, sim, {{0, 0}, 0}, system);
     EXPECT_EQ(result.trace.back().yaw_rate_radps, 0.0);  // the car itself drives straight

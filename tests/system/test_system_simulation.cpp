@@ -84,8 +84,9 @@ TEST(SteeringSystemSimulation, ScenarioRouteIsTheSystemRoute) {
   const runner::Scenario scenario = lane_change();
   const runner::RunResult run = runner::run_scenario(scenario);
   const std::unique_ptr<SteeringController> controller = runner::make_controller(scenario);
-  SteeringSystem system(
-      *controller, steering_system_parameters(scenario.simulation.side_slip, scenario.vehicle));
+  SteeringSystem system(*controller,
+                        steering_system_parameters(scenario.simulation.side_slip, scenario.vehicle,
+                                                   scenario.actuator));
   const std::unique_ptr<VehicleModel> model = runner::make_vehicle_model(scenario);
   const SimulationResult result =
       simulate(*scenario.path, *model, scenario.actuator, scenario.speed, scenario.simulation,

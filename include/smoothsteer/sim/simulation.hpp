@@ -70,6 +70,9 @@ struct SideSlipEstimation {
   double max_steering_offset_rad = SideSlipObserverParameters{}.max_steering_offset_rad;
   double steering_offset_process_std_radps =
       SideSlipObserverParameters{}.steering_offset_process_std_radps;
+  //! The held command makes up for the learned offset through the controller's actuator model
+  //! (SteeringSystemParameters::compensate_steering_offset).
+  bool compensate_steering_offset = true;
 };
 
 struct SimulationParameters {
@@ -217,9 +220,11 @@ SimulationResult simulate(const Path& path, const VehicleModel& vehicle,
 //! The car's steering system that the controller overloads drive: `controller` with the
 //! slip input of parameters.side_slip (none: kinematic, truth: the plant's slip as a sensor,
 //! observer: SideSlipObserver believing the vehicle file times the scales, with the tire model,
-//! and trusting its sensors as much as their simulated noise says).
+//! and trusting its sensors as much as their simulated noise says), and `actuator` as the
+//! actuator's model the held command makes up for the steering offset through.
 SteeringSystemParameters steering_system_parameters(const SideSlipEstimation& slip,
-                                                    const VehicleParameters& vehicle);
+                                                    const VehicleParameters& vehicle,
+                                                    const ActuatorParameters& actuator);
 
 //! Runs the closed loop with a car's steering system (the one wiring: the controller overloads
 //! build one with steering_system_parameters() and call this). The system is reset first. Its

@@ -41,6 +41,7 @@
 #include "smoothsteer/status.hpp"
 #include "smoothsteer/system/driving_domain.hpp"
 #include "smoothsteer/system/pose_latency_estimator.hpp"
+#include "smoothsteer/system/steering_offset_compensation.hpp"
 #include "smoothsteer/validation.hpp"
 #include "smoothsteer/vehicle/side_slip_observer.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
@@ -72,6 +73,14 @@ struct SteeringSystemParameters {
   //! (SteeringSystemInput::pose_age_s = 0; pose_latency_estimator.hpp): the lag of the pose's
   //! heading behind the gyro, plus the time since the pose last changed.
   bool estimate_pose_age = true;
+  //! The steering actuator's model (dead time and low-pass, steering_actuator.hpp) the command
+  //! is held through. With it, the observer (its max_steering_offset_rad > 0) and a lead-wheel
+  //! controller whose governor holds finite angle and rate limits, the held command makes up for
+  //! the steering offset the observer learns, told apart from an angle sensor's bias by the
+  //! actuator's predicted angle (steering_offset_compensation.hpp). Absent: no compensation.
+  std::optional<ActuatorParameters> actuator;
+  //! Whether the held command makes up for the steering offset (given the above).
+  bool compensate_steering_offset = true;
 
   //! The vehicle file's observer (SideSlipObserverParameters::from_vehicle) with `tire_model`.
   static SteeringSystemParameters from_vehicle(
@@ -140,6 +149,8 @@ struct SideSlipDiagnostics {
   double yaw_rate_radps = 0.0;           //!< observer's filtered r [rad/s]
   //! observer's steering offset: the road wheels' angle minus the measured one [rad]
   double steering_offset_rad = 0.0;
+  //! the filter's standard deviation of it [rad]
+  double steering_offset_std_rad = 0.0;
   //! The observer's update() status (ok without an observer). Not ok: beta_r = 0 this period.
   Status observer_status = Status::ok;
   //! False when the observer's estimate is saturated, or no sample has corrected it for a while
@@ -157,6 +168,11 @@ struct SteeringSystemOutput {
   int derivatives_available = 0;
   //! The pose's age the controller carried the pose over [s]: the input's, or the estimate.
   double pose_age_s = 0.0;
+  //! The steering offset the held command makes up for: the road wheels steer the command plus
+  //! this [rad] (0 without compensation; steering_offset_compensation.hpp).
+  double applied_steering_offset_rad = 0.0;
+  //! The measured angle's bias against the actuator's predicted angle [rad] (0 without).
+  double steering_angle_sensor_bias_rad = 0.0;
   TrackingDiagnostics tracking;     //!< the controller's diagnostics
   SideSlipDiagnostics side_slip;    //!< the observer's estimate
   std::uint32_t active_limits = 0;  //!< ActiveLimit bits
@@ -192,10 +208,9 @@ class SteeringSystem {
   //! |angle| >= pi / 2 or beyond the car's angle limit, and then nothing changes.
   //! The observer's steering offset, which reset() keeps (the car's rack stays as it is), stays.
   Status reset(double measured_steering_angle_rad = 0.0) noexcept;
-  //! The observer's steering offset back to 0 (a new car, a realigned rack or sensor).
-  void forget_steering_offset() noexcept {
-    if (observer_) observer_->forget_steering_offset();
-  }
+  //! The observer's steering offset and the compensation's back to 0 (a new car, a realigned
+  //! rack or sensor).
+  void forget_steering_offset() noexcept;
   //! Replanning: SteeringController::set_path's contract.
   //! With a domain (SteeringSystemParameters::domain) it also measures the path's demand
   //! (curvature_demand(): O(curvature samples), no allocation).
@@ -206,6 +221,11 @@ class SteeringSystem {
   }
 
   const SteeringController& controller() const noexcept { return *controller_; }
+  //! The steering offset compensation (nullptr without one: see
+  //! SteeringSystemParameters::actuator).
+  const SteeringOffsetCompensation* steering_offset_compensation() const noexcept {
+    return compensation_ ? &*compensation_ : nullptr;
+  }
   //! The observer (nullptr unless SlipInput::observer).
   const SideSlipObserver* observer() const noexcept { return observer_ ? &*observer_ : nullptr; }
   const SteeringSystemParameters& parameters() const noexcept { return parameters_; }
@@ -226,6 +246,7 @@ class SteeringSystem {
   std::optional<SideSlipObserver> observer_;
   //! The observer's next state, committed when the controller accepts the period.
   std::optional<SideSlipObserver> pending_observer_;
+  std::optional<SteeringOffsetCompensation> compensation_;
   ControllerInput controller_input_;
   ControllerOutput controller_output_;  //!< the previous output, as update() expects
   PathCurvatureDemand path_demand_;     //!< of the last path set_path() accepted (with a domain)

@@ -131,6 +131,9 @@ class SideSlipObserver {
   double rear_axle_side_slip_rad() const noexcept { return rear_side_slip_; }
   //! delta_o: the road wheels' angle minus the measured one [rad], within the bound.
   double steering_offset_rad() const noexcept { return steering_offset_; }
+  //! The standard deviation the filter gives delta_o [rad] (0.5 max_steering_offset_rad before
+  //! it has learned anything).
+  double steering_offset_std_rad() const noexcept;
   const SideSlipObserverParameters& parameters() const noexcept { return parameters_; }
   //! What the gates rejected, and whether the estimate is trusted.
   const SideSlipObserverHealth& health() const noexcept { return health_; }

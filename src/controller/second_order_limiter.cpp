@@ -59,8 +59,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
-#include "smoothsteer/baselines/steering_limits.hpp"
+#include "smoothsteer/controller/command_limiter.hpp"
 
 namespace smoothsteer {
 
@@ -118,6 +119,21 @@ Interval command_window(double previous, double previous_rate, double period, do
 }
 
 }  // namespace
+
+std::optional<Violation> SteeringLimits::first_violation() const noexcept {
+  RuleChecker check("SteeringLimits");
+  check.require(positive_finite(angle_rad) && angle_rad < std::numbers::pi / 2.0, "angle_rad",
+                angle_rad, "must be in (0, pi/2)");
+  check.require_positive({{"rate_radps", rate_radps}});
+  check.require(!std::isnan(acceleration_radps2) && acceleration_radps2 > 0.0,
+                "acceleration_radps2", acceleration_radps2, "must be > 0 (+inf: no limit)");
+  return check.first();
+}
+
+double SaturationStatistics::limited_fraction() const noexcept {
+  if (updates == 0) return 0.0;
+  return std::min(1.0, static_cast<double>(limited) / static_cast<double>(updates));
+}
 
 SteeringSaturator::SteeringSaturator(const SteeringLimits& limits) : limits_(limits) {
   limits_.validate();
