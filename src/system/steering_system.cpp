@@ -11,11 +11,6 @@
 namespace smoothsteer {
 namespace {
 
-const LeadWheelController* find_lead_wheel(const SteeringController& controller) noexcept {
-  if (const auto* own = dynamic_cast<const LeadWheelController*>(&controller)) return own;
-  return controller.inner_lead_wheel();
-}
-
 //! The lead-wheel controller for the constructor that builds one: its wheelbase must be the car's.
 std::unique_ptr<SteeringController> lead_wheel_for(const VehicleParameters& vehicle,
                                                    const ControllerParameters& controller,
@@ -101,7 +96,7 @@ SteeringSystem::SteeringSystem(const VehicleParameters& vehicle,
 void SteeringSystem::set_up(const SteeringSystemParameters& parameters) {
   parameters.validate();
   parameters_ = parameters;
-  lead_wheel_ = find_lead_wheel(*controller_);
+  lead_wheel_ = controller_->inner_lead_wheel();
   if (parameters_.slip_input == SlipInput::observer) {
     observer_.emplace(parameters_.observer);
     pending_observer_.emplace(parameters_.observer);

@@ -55,6 +55,7 @@ class LeadWheelController final : public SteeringController {
   //! Clears the disturbance estimate (a new car, a wheel alignment, a test from scratch).
   void forget_disturbance_estimate() noexcept { disturbance_.forget(); }
   const char* name() const noexcept override { return "lead_wheel"; }
+  const LeadWheelController* inner_lead_wheel() const noexcept override { return this; }
   //! Replanning (SteeringController::set_path): swaps the path and re-seeds the three hints;
   //! the chain state, direction and delay history carry on, so delta_veh stays continuous
   //! (src/controller/lead_wheel_set_path.cpp).

@@ -199,8 +199,9 @@ class SteeringController {
     (void)lead_curvature_disturbance;
     return false;
   }
-  //! The lead-wheel controller a wrapper runs (a gain schedule's), for diagnostics
-  //! (SteeringSystem's active limits); nullptr for every other controller.
+  //! The lead-wheel controller this is or runs (itself, or a gain schedule's), for diagnostics
+  //! and the car's limits (SteeringSystem's active limits and offset compensation); nullptr for
+  //! every other controller.
   virtual const LeadWheelController* inner_lead_wheel() const noexcept { return nullptr; }
 
  protected:
