@@ -27,15 +27,14 @@ Status SaturatedController::compute_command(const ControllerInput& input,
   ControllerOutput raw = output;
   const Status status = inner_->update(input, raw);
   if (status != Status::ok) return status;
-  // The limiter's own previous rate: the rate at reset (0) before the first update, so the
-  // reported acceleration is the one the limiter bounds.
-  const double previous_rate = saturator_.previous_rate();
-  double rate = 0.0;
-  const double angle = saturator_.apply(raw.steering_angle_rad, input.period_s, rate);
+  // From the limiter's own previous rate (0 at reset, before the first update), so the reported
+  // acceleration is the one the limiter bounds.
+  double rate = 0.0, acceleration = 0.0;
+  const double angle = saturator_.apply(raw.steering_angle_rad, input.period_s, rate, acceleration);
   output = raw;
   output.steering_angle_rad = angle;
   output.steering_rate_radps = rate;
-  output.steering_acceleration_radps2 = (rate - previous_rate) / input.period_s;
+  output.steering_acceleration_radps2 = acceleration;
   output.derivatives_available = 2;
   return Status::ok;
 }

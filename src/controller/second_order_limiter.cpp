@@ -155,6 +155,15 @@ void SteeringSaturator::reset(double angle_rad, double rate_radps) noexcept {
   previous_target_ = previous_;
 }
 
+double SteeringSaturator::apply(double raw_angle_rad, double period_s, double& rate_radps,
+                                double& acceleration_radps2) noexcept {
+  const double previous_rate = previous_rate_;
+  const double angle = apply(raw_angle_rad, period_s, rate_radps);
+  const bool valid_period = std::isfinite(period_s) && period_s > 0.0;
+  acceleration_radps2 = valid_period ? (rate_radps - previous_rate) / period_s : 0.0;
+  return angle;
+}
+
 double SteeringSaturator::apply(double raw_angle_rad, double period_s,
                                 double& rate_radps) noexcept {
   if (!std::isfinite(period_s) || !(period_s > 0.0)) {

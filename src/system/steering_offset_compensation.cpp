@@ -112,9 +112,8 @@ double SteeringOffsetCompensation::update(double command_rad,
       bound);
   double offset_rate = 0.0;
   const double offset = offset_limiter_.apply(target, period_s, offset_rate);
-  const double previous_rate = command_limiter_.previous_rate();
-  const double held = command_limiter_.apply(command_rad - offset, period_s, rate_radps);
-  acceleration_radps2 = (rate_radps - previous_rate) / period_s;
+  const double held =
+      command_limiter_.apply(command_rad - offset, period_s, rate_radps, acceleration_radps2);
   held_rad_ = held;
   has_held_ = true;
   return held;

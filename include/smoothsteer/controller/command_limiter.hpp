@@ -64,6 +64,10 @@ class SteeringSaturator {
   //! the target (approached within the limits). A period that is not finite and > 0 returns the
   //! previous command with rate 0 and changes nothing. noexcept, allocation-free.
   double apply(double raw_angle_rad, double period_s, double& rate_radps) noexcept;
+  //! The same, with `acceleration_radps2` the applied rate's change over the period (0 for a
+  //! period that is not finite and > 0): the held command's differenced acceleration.
+  double apply(double raw_angle_rad, double period_s, double& rate_radps,
+               double& acceleration_radps2) noexcept;
   //! Restarts from the measured angle and rate, clamped into the set from which the limits can
   //! be kept (|angle| <= angle_rad, |rate| <= rate_radps, stopping distance inside the angle
   //! bound); a non-finite value counts as 0.
