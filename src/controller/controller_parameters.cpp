@@ -40,45 +40,55 @@ const char* group_hint(ParameterGroup group) noexcept {
   }
 }
 
-//! Every rule of the parameters, once. `fail(field, value, rule)` is called for the first broken
-//! rule with lazily evaluated field and rule texts, and its result returned; true means valid.
-//! is_valid() passes a no-op and so never builds a string; validation_error() formats them.
-//! First each field on its own, as the field table (parameter_fields.hpp) states its range, then
-//! the rules that relate two fields: each names both.
+//! A rule text, built only when a rule fails.
+auto text(const char* literal) {
+  return [literal] { return std::string(literal); };
+}
+
+bool finite_positive(double x) noexcept {
+  return std::isfinite(x) && x > 0.0;
+}
+
+// The rules in groups, in the order check_rules() applies them. Each calls `fail(field, value,
+// rule)` for the first rule it finds broken and returns its result (false), else true.
+
 template <typename Fail>
-bool check_rules(const ControllerParameters& p, Fail&& fail) {
-  auto text = [](const char* literal) { return [literal] { return std::string(literal); }; };
-  auto finite_positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+bool check_wheelbases(const ControllerParameters& p, Fail& fail) {
   constexpr double shortest = ControllerParameters::min_wheelbase_m;
   constexpr double longest = ControllerParameters::max_wheelbase_m;
   const ChainParameters& chain = p.chain;
-  double shortest_lambda = longest;
+  for (int i = 0; i < chain.order; ++i) {
+    const double lambda = chain.wheelbases_m[static_cast<std::size_t>(i)];
+    auto indexed = [i] { return wheelbase_name(i); };
+    if (!finite_positive(lambda)) {
+      return fail(indexed, lambda,
+                  text("must be finite and > 0 (reversing is selected by v < 0, not by the "
+                       "sign)"));
+    }
+    if (lambda < shortest || lambda > longest) {
+      return fail(indexed, lambda,
+                  text("must be in [0.01, 100] m (min_wheelbase_m, max_wheelbase_m)"));
+    }
+    // Paper Sec. III item 3: lambda^2 = lambda_veh^2 - lambda_l^2 implies lambda_l <
+    // lambda_veh.
+    if (i >= 1 && lambda >= chain.vehicle_wheelbase_m) {
+      return fail(indexed, lambda, [&p] {
+        return "must be < vehicle_wheelbase_m = " + std::to_string(p.chain.vehicle_wheelbase_m) +
+               " (eq. cornering_constr: lambda_l < lambda_veh)";
+      });
+    }
+  }
+  return true;
+}
+
+//! Each field on its own, as the field table (parameter_fields.hpp) states its range.
+template <typename Fail>
+bool check_fields(const ControllerParameters& p, Fail& fail) {
+  const ChainParameters& chain = p.chain;
   for (const ParameterField& field : controller_parameter_fields()) {
     auto name = [&field] { return std::string(field.name); };
     if (field.kind == FieldKind::wheelbases) {
-      for (int i = 0; i < chain.order; ++i) {
-        const double lambda = chain.wheelbases_m[static_cast<std::size_t>(i)];
-        auto indexed = [i] { return wheelbase_name(i); };
-        if (!finite_positive(lambda)) {
-          return fail(indexed, lambda,
-                      text("must be finite and > 0 (reversing is selected by v < 0, not by the "
-                           "sign)"));
-        }
-        if (lambda < shortest || lambda > longest) {
-          return fail(indexed, lambda,
-                      text("must be in [0.01, 100] m (min_wheelbase_m, max_wheelbase_m)"));
-        }
-        shortest_lambda = std::min(shortest_lambda, lambda);
-        // Paper Sec. III item 3: lambda^2 = lambda_veh^2 - lambda_l^2 implies lambda_l <
-        // lambda_veh.
-        if (i >= 1 && lambda >= chain.vehicle_wheelbase_m) {
-          return fail(indexed, lambda, [&p] {
-            return "must be < vehicle_wheelbase_m = " +
-                   std::to_string(p.chain.vehicle_wheelbase_m) +
-                   " (eq. cornering_constr: lambda_l < lambda_veh)";
-          });
-        }
-      }
+      if (!check_wheelbases(p, fail)) return false;
       continue;
     }
     if (field.group == ParameterGroup::governor && !p.governor.enabled) continue;
@@ -93,6 +103,16 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
       return fail(name, value, [&field] { return std::string(field.rule); });
     }
   }
+  return true;
+}
+
+template <typename Fail>
+bool check_substep(const ControllerParameters& p, Fail& fail) {
+  const ChainParameters& chain = p.chain;
+  double shortest_lambda = ControllerParameters::max_wheelbase_m;
+  for (int i = 0; i < chain.order; ++i) {
+    shortest_lambda = std::min(shortest_lambda, chain.wheelbases_m[static_cast<std::size_t>(i)]);
+  }
   if (chain.order > 0 &&
       chain.max_substep_fraction * shortest_lambda < ControllerParameters::min_substep_m) {
     return fail(text("max_substep_fraction"), chain.max_substep_fraction, [shortest_lambda] {
@@ -100,28 +120,37 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
              " m must be >= min_substep_m = 0.001 m";
     });
   }
+  return true;
+}
+
+template <typename Fail>
+bool check_planned_jumps(const ControllerParameters& p, Fail& fail) {
   const FeedforwardParameters& ff = p.feedforward;
-  if (ff.curvature_preview == CurvaturePreview::planned_jumps) {
-    const int preview = static_cast<int>(ff.curvature_preview);
-    if (ff.cornering_target != CorneringTarget::rear_axle_exact) {
-      return fail(text("curvature_preview (1 = planned_jumps)"), preview,
-                  text("planned_jumps needs cornering_target rear_axle_exact (the plan is the "
-                       "rear axle's curvature, which only the chain's inverse turns into a "
-                       "target)"));
-    }
-    if (chain.order < 1 || chain.order > 2) {
-      return fail(text("curvature_preview (1 = planned_jumps)"), preview,
-                  text("planned_jumps needs order 1 or 2 (the plan's lags are simulated for "
-                       "those)"));
-    }
-    if (!std::isfinite(ff.curvature_rate) || !(ff.curvature_rate > 0.0)) {
-      return fail(text("curvature_preview (1 = planned_jumps)"), preview,
-                  text("planned_jumps needs a finite feedforward_curvature_rate > 0 (the plan "
-                       "ramps at it)"));
-    }
+  if (ff.curvature_preview != CurvaturePreview::planned_jumps) return true;
+  const int preview = static_cast<int>(ff.curvature_preview);
+  if (ff.cornering_target != CorneringTarget::rear_axle_exact) {
+    return fail(text("curvature_preview (1 = planned_jumps)"), preview,
+                text("planned_jumps needs cornering_target rear_axle_exact (the plan is the "
+                     "rear axle's curvature, which only the chain's inverse turns into a "
+                     "target)"));
   }
-  // An optional group that is off must keep its fields at their defaults: a value set there
-  // would do nothing, and silently so. One that is on must not hold its "off" value.
+  if (p.chain.order < 1 || p.chain.order > 2) {
+    return fail(text("curvature_preview (1 = planned_jumps)"), preview,
+                text("planned_jumps needs order 1 or 2 (the plan's lags are simulated for "
+                     "those)"));
+  }
+  if (!std::isfinite(ff.curvature_rate) || !(ff.curvature_rate > 0.0)) {
+    return fail(text("curvature_preview (1 = planned_jumps)"), preview,
+                text("planned_jumps needs a finite feedforward_curvature_rate > 0 (the plan "
+                     "ramps at it)"));
+  }
+  return true;
+}
+
+//! An optional group that is off must keep its fields at their defaults: a value set there
+//! would do nothing, and silently so. One that is on must not hold its "off" value.
+template <typename Fail>
+bool check_group_switches(const ControllerParameters& p, Fail& fail) {
   static constexpr ControllerParameters defaults{};
   for (const ParameterField& field : controller_parameter_fields()) {
     if (field.group == ParameterGroup::none || field.group == ParameterGroup::governor) continue;
@@ -146,6 +175,14 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
                   });
     }
   }
+  return true;
+}
+
+//! Groups that are on but cannot act with the rest of the parameters.
+template <typename Fail>
+bool check_group_combinations(const ControllerParameters& p, Fail& fail) {
+  const ChainParameters& chain = p.chain;
+  const FeedforwardParameters& ff = p.feedforward;
   const SingleTrackInversion& slip = p.single_track;
   if (slip.enabled && slip.rear_slip_gradient_s2pm == 0.0 && slip.front_slip_gradient_s2pm == 0.0) {
     return fail(text("rear_slip_gradient_s2pm"), 0.0,
@@ -179,7 +216,13 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
                 p.friction_guard.max_lateral_acceleration_mps2,
                 text("has no effect with order = 0 (the guard bounds the chain's lead curvature)"));
   }
-  // Invariant sets down the chain (paper_notes §2): kbar_i lambda_i < 1 for every wheel.
+  return true;
+}
+
+//! Invariant sets down the chain (paper_notes §2): kbar_i lambda_i < 1 for every wheel.
+template <typename Fail>
+bool check_invariant_sets(const ControllerParameters& p, Fail& fail) {
+  const ChainParameters& chain = p.chain;
   double kbar = chain.lead_curvature_bound;
   for (int i = chain.order; i >= 1; --i) {
     const double product = kbar * chain.wheelbases_m[static_cast<std::size_t>(i - 1)];
@@ -195,6 +238,18 @@ bool check_rules(const ControllerParameters& p, Fail&& fail) {
     kbar /= std::sqrt(1.0 - product * product);
   }
   return true;
+}
+
+//! Every rule of the parameters, once. `fail(field, value, rule)` is called for the first broken
+//! rule with lazily evaluated field and rule texts; it returns false, and so does check_rules();
+//! true means valid. is_valid() passes a no-op and so never builds a string; validation_error()
+//! formats them. First each field on its own, as the field table (parameter_fields.hpp) states
+//! its range, then the rules that relate two fields: each names both.
+template <typename Fail>
+bool check_rules(const ControllerParameters& p, Fail&& fail) {
+  return check_fields(p, fail) && check_substep(p, fail) && check_planned_jumps(p, fail) &&
+         check_group_switches(p, fail) && check_group_combinations(p, fail) &&
+         check_invariant_sets(p, fail);
 }
 
 }  // namespace

@@ -110,119 +110,142 @@ double kink_rounding(double slope_step, double width_m, double offset_m) noexcep
   return slope_step * (reach * reach / (2.0 * width_m) - std::max(offset_m, 0.0));
 }
 
-CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
-                                        double feedforward_rate, double feedforward_bound,
-                                        const double* wheelbases, int order,
-                                        double kink_rate) noexcept {
-  const double rate = jump_plan_rate_margin * feedforward_rate;
-  const double bound = jump_plan_bound_margin * feedforward_bound;
-  const int stages = std::clamp(order, 1, 2);
-  double longest = 0.0, reach = 0.0, length_squared = 0.0;
-  for (int i = 0; i < stages; ++i) {
-    longest = std::max(longest, wheelbases[i]);
-    reach += wheelbases[i];
-    length_squared += wheelbases[i] * wheelbases[i];
-  }
-  // The lags forget their start within 8 max lambda (e^-8); a plan reaches at most this far
-  // from its jump: the largest jump (twice the larger of the path's curvature and kbar_ff) with
-  // its counter-steer and overshoot, at `rate`, plus the chain's mean delay.
-  const double history = 8.0 * longest;
-  const double largest_jump = 2.0 * std::max(bound, path.max_abs_curvature());
-  const double plan_reach = 4.0 * largest_jump / std::max(rate, 1e-9) + reach;
-  const double first = arc_length_m - history - plan_reach, last = arc_length_m + plan_reach;
+namespace {
 
+//! The chain's first one or two wheels, whose lags the plan simulates.
+struct PlanChain {
+  int stages = 1;
+  double longest = 0.0;         //!< max lambda_i [m]
+  double reach = 0.0;           //!< m = sum lambda_i [m]
+  double length_squared = 0.0;  //!< V = sum lambda_i^2 [m^2]
+};
+
+PlanChain plan_chain(const double* wheelbases, int order) noexcept {
+  PlanChain chain;
+  chain.stages = std::clamp(order, 1, 2);
+  for (int i = 0; i < chain.stages; ++i) {
+    chain.longest = std::max(chain.longest, wheelbases[i]);
+    chain.reach += wheelbases[i];
+    chain.length_squared += wheelbases[i] * wheelbases[i];
+  }
+  return chain;
+}
+
+//! The jumps planned within reach of one arc length.
+struct PlannedJumps {
   JumpPlan plans[max_planned_jumps];
   int count = 0;
-  const auto& jumps = path.curvature_jumps();
-  const double length = path.length();
-  const int laps = path.is_closed() ? 1 : 0;  // a closed path's jumps repeat every length
-  for (int lap = -laps; lap <= laps; ++lap) {
-    const double shift = lap * length;
-    auto it =
-        std::lower_bound(jumps.begin(), jumps.end(), first - shift,
-                         [](const Path::CurvatureJump& j, double s) { return j.arc_length_m < s; });
-    for (; it != jumps.end() && it->arc_length_m + shift <= last && count < max_planned_jumps;
-         ++it) {
-      Path::CurvatureJump shifted = *it;
-      shifted.arc_length_m += shift;
-      plans[count++] = plan_jump(shifted, rate, bound, reach, length_squared);
-    }
-  }
 
-  // The path's curvature splits into a smooth part (the samples, stepping exactly at each planned
-  // jump, minus those steps) and the planned jumps (plan - before: step plus deviation). The
-  // lags pass the smooth part through unchanged when the lead wheel follows its chain inverse
-  // (section 3), so only the jumps' part needs the lag simulation; the rear axle's jet is the
-  // sum of the smooth part's jet and the lagged jumps' jet.
-  const double spacing = path.curvature_sample_spacing_m();
-  auto steps_at = [&](double s) {
+  //! The planned jumps' steps at or before s [1/m].
+  double steps_at(double s) const noexcept {
     double total = 0.0;
     for (int p = 0; p < count; ++p) {
       if (s >= plans[p].at_m) total += plans[p].sign * plans[p].height;
     }
     return total;
-  };
-  // The planned kinks: a step D of the curvature's slope makes the chain inverse's lead curvature
-  // step by about m D (m = sum lambda_i), which the feedforward can only ramp at `rate`. The
-  // smooth part is therefore rounded over w = m |D| / rate around each kink, centred on it: its
-  // average over a window of width w, the parabolic blend kink_rounding() adds. Outside +-w / 2
-  // the path is unchanged.
-  const auto& kinks = path.curvature_kinks();
-  const double rounding_rate =
-      std::max(jump_plan_rate_margin *
-                   (std::isfinite(kink_rate) && kink_rate > 0.0 ? kink_rate : feedforward_rate),
-               1e-9);
-  const double half_window = 0.5 * reach * path.max_abs_curvature_kink() / rounding_rate;
-  auto rounding = [&](double s) {
+  }
+  //! The jumps' part of the plan at s (plan - before: step plus deviation) [1/m].
+  double part(double s) const noexcept {
+    double deviation = 0.0;
+    for (int p = 0; p < count; ++p) deviation += jump_plan_deviation(plans[p], s);
+    return steps_at(s) + deviation;
+  }
+};
+
+//! Plans the path's jumps in [first, last]; a closed path's jumps repeat every length.
+void plan_jumps(const Path& path, double first, double last, double rate, double bound,
+                const PlanChain& chain, PlannedJumps& planned) noexcept {
+  const auto& jumps = path.curvature_jumps();
+  const double length = path.length();
+  const int laps = path.is_closed() ? 1 : 0;
+  for (int lap = -laps; lap <= laps; ++lap) {
+    const double shift = lap * length;
+    auto it =
+        std::lower_bound(jumps.begin(), jumps.end(), first - shift,
+                         [](const Path::CurvatureJump& j, double s) { return j.arc_length_m < s; });
+    for (;
+         it != jumps.end() && it->arc_length_m + shift <= last && planned.count < max_planned_jumps;
+         ++it) {
+      Path::CurvatureJump shifted = *it;
+      shifted.arc_length_m += shift;
+      planned.plans[planned.count++] =
+          plan_jump(shifted, rate, bound, chain.reach, chain.length_squared);
+    }
+  }
+}
+
+//! The smooth part of the path's curvature: the samples, stepping exactly at each planned jump,
+//! minus those steps, with every kink rounded (kink_rounding()). The planned kinks: a step D of
+//! the curvature's slope makes the chain inverse's lead curvature step by about m D (m = sum
+//! lambda_i), which the feedforward can only ramp at `rate`. The smooth part is therefore
+//! rounded over w = m |D| / rate around each kink, centred on it: its average over a window of
+//! width w. Outside +-w / 2 the path is unchanged.
+class SmoothPart {
+ public:
+  SmoothPart(const Path& path, const PlannedJumps& planned, double reach,
+             double rounding_rate) noexcept
+      : path_(path),
+        planned_(planned),
+        reach_(reach),
+        rounding_rate_(rounding_rate),
+        half_window_(0.5 * reach * path.max_abs_curvature_kink() / rounding_rate),
+        spacing_(path.curvature_sample_spacing_m()),
+        length_(path.length()),
+        laps_(path.is_closed() ? 1 : 0) {}
+
+  double operator()(double s) const noexcept {
+    const double index = std::floor(s / spacing_);
+    const auto i = static_cast<long>(index);
+    const double s0 = index * spacing_, s1 = s0 + spacing_;
+    const double k0 = path_.curvature_sample(i), k1 = path_.curvature_sample(i + 1);
+    double k = k0 + (k1 - k0) * (s - s0) / spacing_;
+    for (int p = 0; p < planned_.count; ++p) {
+      const double at = planned_.plans[p].at_m;
+      if (at > s0 && at <= s1) k = s < at ? k0 : k1;
+    }
+    return k - planned_.steps_at(s) + rounding(s);
+  }
+
+ private:
+  double rounding(double s) const noexcept {
     double total = 0.0;
+    const auto& kinks = path_.curvature_kinks();
     if (kinks.empty()) return total;
-    for (int lap = -laps; lap <= laps; ++lap) {
-      const double shift = lap * length;
+    for (int lap = -laps_; lap <= laps_; ++lap) {
+      const double shift = lap * length_;
       auto it = std::lower_bound(
-          kinks.begin(), kinks.end(), s - half_window - shift,
+          kinks.begin(), kinks.end(), s - half_window_ - shift,
           [](const Path::CurvatureKink& k, double at) { return k.arc_length_m < at; });
-      for (; it != kinks.end() && it->arc_length_m + shift <= s + half_window; ++it) {
+      for (; it != kinks.end() && it->arc_length_m + shift <= s + half_window_; ++it) {
         const double step = it->after - it->before;
-        total += kink_rounding(step, reach * std::abs(step) / rounding_rate,
+        total += kink_rounding(step, reach_ * std::abs(step) / rounding_rate_,
                                s - (it->arc_length_m + shift));
       }
     }
     return total;
-  };
-  auto smooth = [&](double s) {
-    const double index = std::floor(s / spacing);
-    const auto i = static_cast<long>(index);
-    const double s0 = index * spacing, s1 = s0 + spacing;
-    const double k0 = path.curvature_sample(i), k1 = path.curvature_sample(i + 1);
-    double k = k0 + (k1 - k0) * (s - s0) / spacing;
-    for (int p = 0; p < count; ++p) {
-      if (plans[p].at_m > s0 && plans[p].at_m <= s1) k = s < plans[p].at_m ? k0 : k1;
-    }
-    return k - steps_at(s) + rounding(s);
-  };
-  auto jumps_part = [&](double s) {
-    double deviation = 0.0;
-    for (int p = 0; p < count; ++p) deviation += jump_plan_deviation(plans[p], s);
-    return steps_at(s) + deviation;
-  };
+  }
 
-  // The smooth part's jet by central differences, as for the centred ramp.
-  const double jet_step = curvature_jet_step_m;
-  CurvatureJet jet = curvature_jet(smooth(arc_length_m - jet_step), smooth(arc_length_m),
-                                   smooth(arc_length_m + jet_step));
-  if (count == 0) return jet;
+  const Path& path_;
+  const PlannedJumps& planned_;
+  double reach_, rounding_rate_, half_window_, spacing_, length_;
+  int laps_;
+};
 
+//! Adds to `jet` the rear axle's response to the planned jumps' part: the chain's linearised
+//! lags simulated over the last `history` metres before arc_length_m from a stationary start.
+void add_lagged_jumps(CurvatureJet& jet, const PlannedJumps& planned, const PlanChain& chain,
+                      const double* wheelbases, double arc_length_m, double history) noexcept {
   constexpr double step = 0.25;
   const int steps = std::max(1, static_cast<int>(std::ceil(history / step)));
   const double h = history / steps;
   const double decay_front = std::exp(-h / wheelbases[0]);
-  const double decay_lead = stages == 2 ? std::exp(-h / wheelbases[1]) : 0.0;
+  const double decay_lead = chain.stages == 2 ? std::exp(-h / wheelbases[1]) : 0.0;
   const double start = arc_length_m - history;
-  double input = jumps_part(start);
+  double input = planned.part(start);
   double lead_stage = input, rear = input;  // stationary start
   for (int k = 1; k <= steps; ++k) {
-    const double next = jumps_part(start + k * h);
-    if (stages == 2) {
+    const double next = planned.part(start + k * h);
+    if (chain.stages == 2) {
       const double stage = lag_step(lead_stage, input, next, wheelbases[1], h, decay_lead);
       rear = lag_step(rear, lead_stage, stage, wheelbases[0], h, decay_front);
       lead_stage = stage;
@@ -233,17 +256,53 @@ CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
   }
   // sigma_0' = (kappa_1 - sigma_0) / lambda_1 and its derivative (paper_notes §1).
   jet.value += rear;
-  if (stages == 2) {
+  if (chain.stages == 2) {
     const double slope = (lead_stage - rear) / wheelbases[0];
     jet.slope += slope;
     jet.bend += ((input - lead_stage) / wheelbases[1] - slope) / wheelbases[0];
   } else {
     const double slope = (input - rear) / wheelbases[0];
     const double input_slope =
-        (jumps_part(arc_length_m + step) - jumps_part(arc_length_m - step)) / (2 * step);
+        (planned.part(arc_length_m + step) - planned.part(arc_length_m - step)) / (2 * step);
     jet.slope += slope;
     jet.bend += (input_slope - slope) / wheelbases[0];
   }
+}
+
+}  // namespace
+
+CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
+                                        double feedforward_rate, double feedforward_bound,
+                                        const double* wheelbases, int order,
+                                        double kink_rate) noexcept {
+  const double rate = jump_plan_rate_margin * feedforward_rate;
+  const double bound = jump_plan_bound_margin * feedforward_bound;
+  const PlanChain chain = plan_chain(wheelbases, order);
+  // The lags forget their start within 8 max lambda (e^-8); a plan reaches at most this far
+  // from its jump: the largest jump (twice the larger of the path's curvature and kbar_ff) with
+  // its counter-steer and overshoot, at `rate`, plus the chain's mean delay.
+  const double history = 8.0 * chain.longest;
+  const double largest_jump = 2.0 * std::max(bound, path.max_abs_curvature());
+  const double plan_reach = 4.0 * largest_jump / std::max(rate, 1e-9) + chain.reach;
+  PlannedJumps planned;
+  plan_jumps(path, arc_length_m - history - plan_reach, arc_length_m + plan_reach, rate, bound,
+             chain, planned);
+
+  // The path's curvature splits into a smooth part and the planned jumps (plan - before: step
+  // plus deviation). The lags pass the smooth part through unchanged when the lead wheel follows
+  // its chain inverse (section 3), so only the jumps' part needs the lag simulation; the rear
+  // axle's jet is the sum of the smooth part's jet and the lagged jumps' jet.
+  const double rounding_rate =
+      std::max(jump_plan_rate_margin *
+                   (std::isfinite(kink_rate) && kink_rate > 0.0 ? kink_rate : feedforward_rate),
+               1e-9);
+  const SmoothPart smooth(path, planned, chain.reach, rounding_rate);
+  // The smooth part's jet by central differences, as for the centred ramp.
+  const double jet_step = curvature_jet_step_m;
+  CurvatureJet jet = curvature_jet(smooth(arc_length_m - jet_step), smooth(arc_length_m),
+                                   smooth(arc_length_m + jet_step));
+  if (planned.count == 0) return jet;
+  add_lagged_jumps(jet, planned, chain, wheelbases, arc_length_m, history);
   return jet;
 }
 

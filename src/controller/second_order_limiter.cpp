@@ -118,6 +118,16 @@ Interval command_window(double previous, double previous_rate, double period, do
   return {command_low, command_high};
 }
 
+//! Counts a finite angle beyond the bound by more than the tolerance; true when it is.
+bool count_angle_excess(double raw_angle_rad, double angle_bound,
+                        SaturationStatistics& statistics) noexcept {
+  const double excess = std::abs(raw_angle_rad) - angle_bound;
+  if (!(excess > relative_tolerance * angle_bound)) return false;
+  ++statistics.angle_limited;
+  statistics.max_angle_excess_rad = std::max(statistics.max_angle_excess_rad, excess);
+  return true;
+}
+
 }  // namespace
 
 std::optional<Violation> SteeringLimits::first_violation() const noexcept {
@@ -180,15 +190,7 @@ double SteeringSaturator::apply(double raw_angle_rad, double period_s,
   // The first-order clamps, counted as before: angle, then the change to rate * dt.
   const bool finite = std::isfinite(raw_angle_rad);
   const double target = finite ? std::clamp(raw_angle_rad, -angle_bound, angle_bound) : previous;
-  bool angle_limited = false;
-  if (finite) {
-    const double excess = std::abs(raw_angle_rad) - angle_bound;
-    if (excess > relative_tolerance * angle_bound) {
-      angle_limited = true;
-      ++statistics_.angle_limited;
-      statistics_.max_angle_excess_rad = std::max(statistics_.max_angle_excess_rad, excess);
-    }
-  }
+  const bool angle_limited = finite && count_angle_excess(raw_angle_rad, angle_bound, statistics_);
   const double largest_change = rate_bound * h;
   const double change = target - previous;
   const bool rate_limited = std::abs(change) > largest_change * (1.0 + relative_tolerance);
