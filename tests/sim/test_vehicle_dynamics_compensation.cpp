@@ -353,7 +353,7 @@ TEST(PlantDisturbance, EstimationFindsTheDisturbanceAndRemovesTheOffset) {
                                testing::seed_message(seed);
     EXPECT_NEAR(with.estimate, disturbance, 0.03 * std::abs(disturbance)) << inputs;
     // The target's heading carries the chain's steady cross-track angle kappa_d l
-    // (lead_wheel_controller.cpp, target_curve): the offset goes, not only a part of it
+    // (lead_wheel_target.cpp, target_curve): the offset goes, not only a part of it
     // (at most 3.2 % and 4.9 mm over 300 seeds).
     EXPECT_LT(with.offset, 0.05 * without.offset)
         << "with " << with.offset << " without " << without.offset << "; " << inputs;

@@ -16,13 +16,15 @@
 #include <cmath>
 #include <memory>
 
+#include "smoothsteer/controller/actuator_inversion.hpp"
+#include "smoothsteer/controller/chain_stepper.hpp"
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/controller/delay_prediction.hpp"
 #include "smoothsteer/controller/disturbance_estimator.hpp"
 #include "smoothsteer/controller/dubins_switching_law.hpp"
 #include "smoothsteer/controller/dynamics_inversion.hpp"
 #include "smoothsteer/controller/feedforward.hpp"
-#include "smoothsteer/controller/near_law_layer.hpp"
+#include "smoothsteer/controller/governor_stage.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/controller/trailer_chain.hpp"
@@ -104,6 +106,13 @@ class LeadWheelController final : public SteeringController {
   double vehicle_steering_angle(double front_angle) const noexcept;
 
  private:
+  //! What the sub-steps of one period share.
+  struct PeriodPlan {
+    double speed_magnitude = 0.0;    //!< |v| [m/s]
+    double guard = 0.0;              //!< the friction guard's largest lead curvature [1/m]
+    double feedforward_bound = 0.0;  //!< kbar_ff, within the guard [1/m]
+    double feedforward_step = 0.0;   //!< how far kappa_ff may move in a sub-step [1/m]
+  };
   struct LeadWheelState {
     PathProjection projection;
     double relative_heading = 0.0;
@@ -111,6 +120,31 @@ class LeadWheelController final : public SteeringController {
     double feedforward_target = 0.0;  //!< curvature that keeps the lead wheel on its target curve
     SwitchingResult law;              //!< the switching part kappa_sw
   };
+  // The stages of compute_command() (src/controller/lead_wheel_step.cpp), in the order they run.
+  //! A change of the direction of travel mirrors the chain (initialise_chain()).
+  void follow_direction_of_travel(double speed_mps) noexcept;
+  //! Stages 1-3: the single-track inversion, the disturbance estimate and the delay prediction;
+  //! returns the rear axle's pose (position and course) the law acts on.
+  Pose2 predict_law_pose(const ControllerInput& input) noexcept;
+  //! Stage 2, the disturbance estimate, from the course turned since the last period.
+  void estimate_disturbance(const ControllerInput& input) noexcept;
+  //! The period's sub-steps (stepper) and governor, and what the split needs from them.
+  PeriodPlan begin_period(const ControllerInput& input, const Pose2& law_pose,
+                          ChainStepper& stepper) noexcept;
+  //! One sub-step: law, governor, split (stage 4), chain; returns kappa_n. The first sub-step
+  //! keeps its lead-wheel state in `first` for the diagnostics.
+  double substep(const PeriodPlan& plan, bool first_substep, ChainStepper& stepper,
+                 LeadWheelState& first) noexcept;
+  //! delta_veh of the chain (or of n = 0's kappa_n) and its time derivatives.
+  SteeringCommand chain_command(double speed_magnitude, double acceleration_mps2,
+                                double lead_curvature) const noexcept;
+  //! Stage 5, the actuator inversion, then the approach after a reset; writes the command.
+  void send_command(SteeringCommand command, double speed_magnitude, double period_s,
+                    ControllerOutput& output) noexcept;
+  //! The real axles' errors and the step's internals; feeds the estimate the rear axle's path.
+  void write_diagnostics(const ControllerInput& input, const LeadWheelState& first,
+                         double lead_curvature, ControllerOutput& output) noexcept;
+
   //! refresh_target: recompute target_ at this projection (once per period, the first sub-step).
   //! The switching part has authority switching_bound and boundary layer boundary_layer;
   //! feedforward_rate is the rate kappa_ff moves at in this period (L_ff, or the governor's).
@@ -155,24 +189,17 @@ class LeadWheelController final : public SteeringController {
   double feedforward_curvature_ = 0.0;
   // The stages of compute_command() that keep state of their own, in the order they run:
   // the single-track inversion at the current speed, the disturbance estimate, the delay
-  // prediction (whose command history the estimate reads too).
+  // prediction (whose command history the estimate reads too), the steering governor.
   DynamicsInversion dynamics_{};
   DisturbanceEstimator disturbance_{};
   DelayPrediction delay_{};
+  GovernorStage governor_{};
   TargetCurve target_;  //!< target curve of the current period
   ChainAngles angles_{};
   double chain_length_squared_ = 0.0;  //!< sum lambda_i^2, for the cornering offset
   double chain_reach_ = 0.0;  //!< sum lambda_i: how far ahead of the rear axle the lead wheel is
   double largest_substep_m_ = 0.0;  //!< max_substep_fraction * min lambda_i [m]
   double direction_ = 1.0;
-  //! The governor's memory (ControllerParameters::governor): for n = 1 the command's rate at the
-  //! end of the last sub-step, and |v| of the last period for the speed change between periods.
-  double governor_rate_ = 0.0;
-  double feedforward_envelope_ = 0.0;  //!< decaying max of |kappa_ff| (the far law's authority)
-  double far_share_ = 0.0;             //!< weight of the far law in kappa_sw, in [0, 1]
-  double heading_envelope_ = 0.0;      //!< decaying max of the lead wheel's |heading error| [rad]
-  NearLawLayer near_layer_{};          //!< the near law's boundary layer under the governor
-  double previous_speed_ = -1.0;
   double matched_disturbance_ = 0.0;
   double last_steering_angle_ = 0.0;
   //! After a reset beyond the invariant set: the last command while it approaches the chain's.

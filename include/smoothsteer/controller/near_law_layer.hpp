@@ -1,7 +1,7 @@
 #pragma once
 //! \file near_law_layer.hpp
-//! Stage of LeadWheelController::compute_command() under the steering governor: the boundary
-//! layer of the near-path law (docs/governor.md, "Stiff on steady stretches").
+//! Part of the governor stage (governor_stage.hpp) of LeadWheelController::compute_command(): the
+//! boundary layer of the near-path law (docs/governor.md, "Stiff on steady stretches").
 //!
 //! The certified near law keeps the split certificate's boundary layer epsilon, whose linear zone
 //! kappa_sw = -e / l^2 - 2 psi / l has the length l = 2 epsilon / kbar_sw: 11 m at 10 m/s and
