@@ -81,14 +81,18 @@ def stack_on_a_circle(sigma, seed, smoothing=True, radius=60.0, speed=12.0):
 def test_jittered_planner_windows_track_as_clean_ones_when_smoothed():
     """The stack's waypoints jittered by 0.5, 2 and 5 cm: smoothed, max |e| stays within 1.2x
     the clean figure plus the jitter (0.07-0.08 m here, the clean run's 0.079 m being its
-    start); interpolated, 2 cm of jitter throws the car off (metres)."""
+    start); interpolated, 2 cm of jitter reads as curvature noise, which the feedforward's
+    averaging over the spline's spread kinks tempers (0.24 m) but does not remove: it stays
+    more than twice the smoothed run's."""
     clean = stack_on_a_circle(0.0, 0)
     for case in range(max(1, property_cases() // 40)):  # 10 seeds at CI's 400
         seed = base_seed() + case
         for sigma in (0.005, 0.02, 0.05):
             worst = stack_on_a_circle(sigma, seed)
             assert worst <= 1.2 * clean + sigma, f"seed {seed}, sigma {sigma}: {worst} m"
-    assert stack_on_a_circle(0.02, base_seed(), smoothing=False) > 1.0
+    smoothed = stack_on_a_circle(0.02, base_seed())
+    interpolated = stack_on_a_circle(0.02, base_seed(), smoothing=False)
+    assert interpolated > 2.0 * smoothed, f"{interpolated} m interpolated, {smoothed} m smoothed"
 
 
 def test_beyond_domain_and_certified_speed_are_flagged():

@@ -36,6 +36,28 @@ double lag_step(double y, double u0, double u1, double lambda, double h, double 
   return u1 - drift + (y - u0 + drift) * decay;
 }
 
+//! The average over [s - width / 2, s + width / 2] of the path's curvature samples joined by
+//! straight lines (exact for that polyline; O(width / spacing)).
+double sampled_curvature_average(const Path& path, double s, double width) noexcept {
+  const double spacing = path.curvature_sample_spacing_m();
+  const double from = s - 0.5 * width, to = s + 0.5 * width;
+  auto value = [&](double at) {
+    const double index = std::floor(at / spacing);
+    const auto i = static_cast<long>(index);
+    const double k0 = path.curvature_sample(i);
+    return k0 + (path.curvature_sample(i + 1) - k0) * (at / spacing - index);
+  };
+  double total = 0.0, a = from, ka = value(from);
+  while (a < to) {
+    const double b = std::min(to, (std::floor(a / spacing) + 1.0) * spacing);
+    const double kb = value(b);
+    total += 0.5 * (b - a) * (ka + kb);
+    a = b;
+    ka = kb;
+  }
+  return total / width;
+}
+
 }  // namespace
 
 JumpPlan plan_jump(const Path::CurvatureJump& jump, double rate, double bound, double chain_reach,
@@ -152,8 +174,9 @@ struct PlannedJumps {
   }
 };
 
-//! Plans the path's jumps in [first, last]; a closed path's jumps repeat every length.
-void plan_jumps(const Path& path, double first, double last, double rate, double bound,
+//! Plans the path's jumps in [first, last] for the query at arc length `at`; a closed path's
+//! jumps repeat every length.
+void plan_jumps(const Path& path, double at, double first, double last, double rate, double bound,
                 const PlanChain& chain, PlannedJumps& planned) noexcept {
   const auto& jumps = path.curvature_jumps();
   const double length = path.length();
@@ -166,6 +189,10 @@ void plan_jumps(const Path& path, double first, double last, double rate, double
     for (;
          it != jumps.end() && it->arc_length_m + shift <= last && planned.count < max_planned_jumps;
          ++it) {
+      // An open path's start against the straight extension behind it is a jump only for a car
+      // that comes along the extension (at = arc length of the query, < 0); a planner's window
+      // starts behind the car, whose past it does not describe.
+      if (!path.is_closed() && it->arc_length_m == 0.0 && at >= 0.0) continue;
       Path::CurvatureJump shifted = *it;
       shifted.arc_length_m += shift;
       planned.plans[planned.count++] =
@@ -189,11 +216,17 @@ class SmoothPart {
         reach_(reach),
         rounding_rate_(rounding_rate),
         half_window_(0.5 * reach * path.max_abs_curvature_kink() / rounding_rate),
+        spline_width_(
+            std::min(reach * path.max_abs_spline_kink() / rounding_rate, max_spline_rounding_m)),
         spacing_(path.curvature_sample_spacing_m()),
         length_(path.length()),
         laps_(path.is_closed() ? 1 : 0) {}
 
   double operator()(double s) const noexcept {
+    // Within an open path: its straight extensions are no road a planner sent.
+    const double width =
+        laps_ == 1 ? spline_width_ : std::min(spline_width_, 2.0 * std::min(s, length_ - s));
+    if (width > spacing_) return sampled_curvature_average(path_, s, width) - planned_.steps_at(s);
     const double index = std::floor(s / spacing_);
     const auto i = static_cast<long>(index);
     const double s0 = index * spacing_, s1 = s0 + spacing_;
@@ -227,7 +260,13 @@ class SmoothPart {
 
   const Path& path_;
   const PlannedJumps& planned_;
-  double reach_, rounding_rate_, half_window_, spacing_, length_;
+  double reach_, rounding_rate_, half_window_;
+  //! A spline spreads a kink over a knot or two and lists none: its curvature is averaged over
+  //! the width a listed kink of its size would be rounded over (m |D| / rate, D =
+  //! Path::max_abs_spline_kink()), which ramps the chain inverse's lead curvature at `rate`
+  //! through it as kink_rounding() does.
+  double spline_width_;
+  double spacing_, length_;
   int laps_;
 };
 
@@ -285,8 +324,8 @@ CurvatureJet planned_rear_curvature_jet(const Path& path, double arc_length_m,
   const double largest_jump = 2.0 * std::max(bound, path.max_abs_curvature());
   const double plan_reach = 4.0 * largest_jump / std::max(rate, 1e-9) + chain.reach;
   PlannedJumps planned;
-  plan_jumps(path, arc_length_m - history - plan_reach, arc_length_m + plan_reach, rate, bound,
-             chain, planned);
+  plan_jumps(path, arc_length_m, arc_length_m - history - plan_reach, arc_length_m + plan_reach,
+             rate, bound, chain, planned);
 
   // The path's curvature splits into a smooth part and the planned jumps (plan - before: step
   // plus deviation). The lags pass the smooth part through unchanged when the lead wheel follows

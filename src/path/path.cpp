@@ -346,7 +346,28 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
     }
   }
   if (!closed && !cubic(pieces.back())) add_kink(path.length_, slope(pieces.back()), 0.0);
+  if (std::any_of(pieces.begin(), pieces.end(), cubic)) {
+    path.max_abs_spline_kink_ =
+        spline_kink(path.curvature_samples_, path.curvature_spacing_, closed);
+  }
   return path;
+}
+
+double Path::spline_kink(const std::vector<double>& samples, double spacing, bool closed) noexcept {
+  const auto count = static_cast<long>(samples.size());
+  const long spread = std::max(1L, std::lround(spline_kink_spread_m / spacing));
+  // A natural spline's ends hold zero curvature, which bends an open path's first and last
+  // metres away from the road it samples: they are not a kink of the road.
+  const long skip = closed ? 0 : std::lround(spline_end_margin_m / spacing);
+  double largest = 0.0;
+  for (long i = skip; i + spread + 1 < count - skip; ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    const auto ahead = static_cast<std::size_t>(i + spread);
+    const double before = samples[at + 1] - samples[at];
+    const double after = samples[ahead + 1] - samples[ahead];
+    largest = std::max(largest, std::abs(after - before) / spacing);
+  }
+  return largest;
 }
 
 double Path::sampled_curvature(double arc_length_m) const noexcept {

@@ -122,9 +122,24 @@ TEST(JumpPlan, TooLittleHeadroomMeetsTheDelayConditionOnly) {
   EXPECT_LE(std::abs(end.heading), 1e-6 * 2.0 * 0.1);  // heading still restored
 }
 
-TEST(JumpPlan, WithoutJumpsTheRearTargetIsThePathsOwnCurvature) {
-  // On a C2 spline there is nothing to plan: the rear axle's target jet is the path's curvature
-  // and its derivatives (the lead wheel then follows their chain inverse, as with centred_ramp).
+//! The average of the path's curvature over [s - w / 2, s + w / 2], by a 401-point trapezoid.
+double curvature_average(const Path& path, double s, double width) {
+  if (!(width > 0.0)) return path.evaluate(s).curvature;
+  constexpr int points = 400;
+  double total = 0.0;
+  for (int i = 0; i <= points; ++i) {
+    const double weight = i == 0 || i == points ? 0.5 : 1.0;
+    total += weight * path.evaluate(s - 0.5 * width + width * i / points).curvature;
+  }
+  return total / points;
+}
+
+TEST(JumpPlan, OnASplineTheRearTargetIsThePathsCurvatureAveragedOverTheKinksWidth) {
+  // A C2 spline lists no jumps and no kinks, but its curvature's slope changes by up to
+  // D = Path::max_abs_spline_kink() within 2 m (a clothoid's start, spread over its knots): the
+  // rear axle's target jet is the path's curvature averaged over w = m D / (0.95 L_ff) (capped
+  // at max_spline_rounding_m and within the path), the width a listed kink of that size is rounded
+  // over, and its derivatives; w < one sample spacing leaves the path's own curvature.
   const int cases = property_cases(20);
   for (int k = 0; k < cases; ++k) {
     const std::uint64_t seed = case_seed(k);
@@ -132,19 +147,32 @@ TEST(JumpPlan, WithoutJumpsTheRearTargetIsThePathsOwnCurvature) {
     SCOPED_TRACE(seed_message(seed));
     const auto path = random_path(random, PathKind::waypoints, random.uniform(0.01, 0.1));
     ASSERT_TRUE(path->curvature_jumps().empty());
+    ASSERT_TRUE(path->curvature_kinks().empty());
+    ASSERT_GT(path->max_abs_spline_kink(), 0.0);
     const double wheelbases[2] = {random.uniform(0.5, 3.0), random.uniform(0.1, 1.5)};
+    const int order = random.integer(1, 2);
+    const double rate = std::pow(10.0, random.uniform(-3.0, 0.0));
+    const double reach = wheelbases[0] + (order == 2 ? wheelbases[1] : 0.0);
+    const double spread =
+        std::min(reach * path->max_abs_spline_kink() / (0.95 * rate), max_spline_rounding_m);
     const double largest = path->max_abs_curvature();
     for (int i = 0; i < 20; ++i) {
       const double s = random.uniform(5.0, path->length() - 5.0);
-      const CurvatureJet jet = planned_rear_curvature_jet(*path, s, 0.01, 2.0 * largest, wheelbases,
-                                                          random.integer(1, 2));
+      // Within the path: near an end the width shrinks to twice the distance to it.
+      auto width_at = [&](double at) {
+        return std::min(spread, 2.0 * std::min(at, path->length() - at));
+      };
+      const double width = width_at(s);
+      const CurvatureJet jet =
+          planned_rear_curvature_jet(*path, s, rate, 2.0 * largest, wheelbases, order);
       const double h = 0.5;
-      const double ahead = path->evaluate(s + h).curvature, here = path->evaluate(s).curvature,
-                   behind = path->evaluate(s - h).curvature;
-      // (0.5 m samples, linearly interpolated: about 2 % of the peak curvature near its peaks;
-      // lagging the path by the chain's reach instead would be off by tens of per cent.)
-      EXPECT_NEAR(jet.value, here, 0.05 * largest) << "s = " << s;
-      EXPECT_NEAR(jet.slope, (ahead - behind) / (2.0 * h), 0.05 * largest) << "s = " << s;
+      const double here = curvature_average(*path, s, width);
+      const double slope = (curvature_average(*path, s + h, width_at(s + h)) -
+                            curvature_average(*path, s - h, width_at(s - h))) /
+                           (2.0 * h);
+      // (0.5 m samples, linearly interpolated: about 2 % of the peak curvature near its peaks.)
+      EXPECT_NEAR(jet.value, here, 0.05 * largest) << "s = " << s << ", width " << width;
+      EXPECT_NEAR(jet.slope, slope, 0.05 * largest) << "s = " << s << ", width " << width;
     }
   }
 }

@@ -21,6 +21,9 @@ inline constexpr double jump_plan_counter_share = 0.22;
 inline constexpr double jump_plan_rate_margin = 0.95;
 //! The plan's extremes stay within this share of kbar_ff.
 inline constexpr double jump_plan_bound_margin = 0.98;
+//! A spline path's curvature is averaged over at most this width [m] (planned_rear_curvature_
+//! jet): the average's cost grows with it, and a wider one blurs the road more than it helps.
+inline constexpr double max_spline_rounding_m = 20.0;
 //! At most this many jumps are planned at once; further ones within reach pass as steps.
 inline constexpr int max_planned_jumps = 16;
 

@@ -166,6 +166,15 @@ class Path {
   const std::vector<CurvatureKink>& curvature_kinks() const noexcept { return curvature_kinks_; }
   //! The largest |after - before| of curvature_kinks() [1/m^2], 0 without kinks.
   double max_abs_curvature_kink() const noexcept { return max_abs_curvature_kink_; }
+  //! A spline through waypoints spreads a clothoid's start (a kink) over a knot or two, where
+  //! no kink is listed. On a path with cubic pieces: the largest change of the sampled
+  //! curvature's slope across spline_kink_spread_m [1/m^2] (a kink's step, once spread); 0 on a
+  //! path of lines, arcs and clothoids, whose kinks are listed.
+  double max_abs_spline_kink() const noexcept { return max_abs_spline_kink_; }
+  //! The distance over which max_abs_spline_kink() measures a slope's change [m].
+  static constexpr double spline_kink_spread_m = 2.0;
+  //! An open path's first and last metres that max_abs_spline_kink() leaves out [m].
+  static constexpr double spline_end_margin_m = 5.0;
 
   //! Position, heading and curvature at arc length s (wrapped if closed, extended if open).
   PathPoint evaluate(double arc_length_m) const noexcept;
@@ -235,6 +244,10 @@ class Path {
   std::vector<CurvatureJump> curvature_jumps_;
   std::vector<CurvatureKink> curvature_kinks_;
   double max_abs_curvature_kink_ = 0.0;
+  double max_abs_spline_kink_ = 0.0;
+  //! max_abs_spline_kink() of the samples `spacing` apart.
+  static double spline_kink(const std::vector<double>& samples, double spacing,
+                            bool closed) noexcept;
 };
 
 }  // namespace smoothsteer
