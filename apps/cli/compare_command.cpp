@@ -10,7 +10,8 @@
 //   engagement    the lane changes started off the path: certified vs baselines vs the
 //                 optimal-control lower bound (docs/engagement.md)
 //   road-suite    every controller on the road suite x the three cars x both plants
-//                 (docs/results/road_suite.md)
+//                 (docs/results/road_suite.md; with --stack-period, as a driving stack drives
+//                 it: docs/results/road_suite_stack.md)
 //   robustness    every controller under a car's imperfections, acting on the plant only
 //                 (docs/results/robustness.md)
 // --plant dynamic|double_track sets the plant of the reported runs (lane-change, the tuning
@@ -156,7 +157,23 @@ void add_road_suite_command(CLI::App& compare, const std::shared_ptr<CompareOpti
   road->add_option("--plants", defaults.models, "plants (scenario models)")
       ->capture_default_str()
       ->check(CLI::IsMember({"dynamic", "double_track", "kinematic"}));
-  road->add_option("--controllers", defaults.controllers, "certified and baseline names")
+  road->add_option("--controllers", defaults.controllers,
+                   "certified, steering_system and baseline names")
+      ->capture_default_str();
+  road->add_option("--stack-period", defaults.planner.period_s,
+                   "stack mode: a planner window by set_path() every this many seconds (0: the "
+                   "whole road; docs/simulation.md)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 10.0));
+  road->add_option("--stack-behind", defaults.planner.behind_m, "window start behind the car [m]")
+      ->capture_default_str();
+  road->add_option("--stack-ahead", defaults.planner.ahead_m, "window end ahead of the car [m]")
+      ->capture_default_str();
+  road->add_option("--stack-spacing", defaults.planner.spacing_m, "waypoint spacing [m]")
+      ->capture_default_str();
+  road->add_option("--jitters", defaults.jitters_m,
+                   "stack mode: Gaussian jitter std per waypoint coordinate [m], one set of runs "
+                   "each")
       ->capture_default_str();
   road->add_option("--traces", defaults.trace_directory,
                    "write each run's trace here (scripts/road_suite_figures.py)");
@@ -176,8 +193,9 @@ void add_road_suite_command(CLI::App& compare, const std::shared_ptr<CompareOpti
       suite.road_files.push_back(options->scenario_directory + "/hairpin.yaml");
     }
     const RoadSuiteResult result = run_road_suite_comparison(suite);
-    emit(result.runs, *options, "road_suite");
-    emit(result.summary, *options, "road_suite_summary");
+    const std::string stem = suite.planner.active() ? "road_suite_stack" : "road_suite";
+    emit(result.runs, *options, stem);
+    emit(result.summary, *options, stem + "_summary");
   });
 }
 

@@ -69,6 +69,7 @@ from ._smoothsteer import (  # noqa: F401
     ReachingBenchmarkOptions,
     ReachingProblem,
     SaturationStatistics,
+    PlannerWindows,
     PlantActuatorScales,
     PlantScales,
     Scenario,

@@ -45,6 +45,20 @@ void bind_simulation_parameters(py::module_& m) {
       .def_readwrite("yaw_moment_nm", &F::yaw_moment_nm, "[N m], + counter-clockwise")
       .def_readwrite("start_s", &F::start_s, "[s]");
 
+  using W = PlannerWindows;
+  py::class_<W>(m, "PlannerWindows",
+                "Stack mode: the road arrives as a planner's windows by set_path() every "
+                "period_s (docs/simulation.md); keyword arguments.")
+      .def(py::init(&from_keywords<W>))
+      .def_readwrite("period_s", &W::period_s, "[s], a multiple of the control period; 0: off")
+      .def_readwrite("behind_m", &W::behind_m, "[m] behind the rear axle's closest point")
+      .def_readwrite("ahead_m", &W::ahead_m, "[m] ahead of it")
+      .def_readwrite("spacing_m", &W::spacing_m, "[m] between waypoints")
+      .def_readwrite("jitter_std_m", &W::jitter_std_m, "[m] Gaussian, per coordinate")
+      .def_readwrite("smoothing_tolerance_m", &W::smoothing_tolerance_m,
+                     "[m]; None: jitter_std_m sqrt(2)")
+      .def("tolerance_m", &W::tolerance_m, "the tolerance the windows are fitted with [m]");
+
   py::enum_<SideSlipSource>(m, "SideSlipSource")
       .value("none", SideSlipSource::none, "beta_r = 0: the kinematic assumption")
       .value("truth", SideSlipSource::truth, "the plant's own slip, an ideal sensor")
@@ -94,6 +108,7 @@ void bind_simulation_parameters(py::module_& m) {
       .def_readwrite("heading_noise_std_rad", &P::heading_noise_std_rad)
       .def_readwrite("noise_seed", &P::noise_seed)
       .def_readwrite("side_slip", &P::side_slip, "SideSlipEstimation")
+      .def_readwrite("planner", &P::planner, "PlannerWindows (stack mode)")
       .def("validation_error", &P::validation_error,
            "'' when valid, else the message naming the field, value and rule.")
       .def("validate", &P::validate, "Raises ValueError naming the field, value and rule.");

@@ -151,6 +151,22 @@ void read_imperfections(ConfigSection& sim, Scenario& s, const std::string& file
   }
 }
 
+//! Stack mode (planner_windows.hpp): simulation.planner. The rule that ties period_s to the
+//! control period is SimulationParameters' (check() names the key).
+void read_planner(ConfigSection& sim, PlannerWindows& windows) {
+  ConfigSection planner = sim.section("planner");
+  windows.period_s = planner.number("period_s", windows.period_s, {0.0, 10.0});
+  windows.behind_m = planner.number("behind_m", windows.behind_m, {0.0, 1000.0});
+  windows.spacing_m = planner.number("spacing_m", windows.spacing_m, {0.05, 50.0});
+  windows.ahead_m = planner.number("ahead_m", windows.ahead_m, {2.0 * windows.spacing_m, 1e4});
+  windows.jitter_std_m = planner.number("jitter_std_m", windows.jitter_std_m, {0.0, 1.0});
+  if (planner.has("smoothing_tolerance_m")) {
+    windows.smoothing_tolerance_m = planner.required_number("smoothing_tolerance_m", {0.0, 10.0});
+  }
+  planner.finish();
+  sim.store("planner", planner.resolved());
+}
+
 }  // namespace
 
 void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides,
@@ -310,6 +326,7 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
       slip.boolean("compensate_steering_offset", estimation.compensate_steering_offset);
   slip.finish();
   sim.store("side_slip", slip.resolved());
+  read_planner(sim, p.planner);
   sim.finish();
   check(sim, p);
   if (const std::string error = a.validation_error(p.substep_s); !error.empty()) {

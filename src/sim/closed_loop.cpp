@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "closed_loop.hpp"
+#include "planner_window.hpp"
 #include "plant_integration.hpp"
 #include "pose_delay.hpp"
 #include "smoothsteer/math/angles.hpp"
@@ -140,6 +141,14 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
   PoseDelay pose_delay(parameters.pose_latency_s, parameters.pose_rate_hz,
                        parameters.control_period_s, start, speed.speed(0.0));
 
+  // Stack mode: a window of the active piece every planner period (from step 0 on), jittered by a
+  // generator of its own so that the sensors' noise sequence stays the run's.
+  const PlannerWindows& planner = parameters.planner;
+  const long planner_steps =
+      planner.active() ? std::lround(planner.period_s / parameters.control_period_s) : 0;
+  std::mt19937_64 planner_engine(parameters.noise_seed ^ 0x9e3779b97f4a7c15ULL);
+  ProjectionHint planner_hint;
+
   std::mt19937_64 engine(parameters.noise_seed);
   std::normal_distribution<double> unit_normal(0.0, 1.0);
   const SideSlipEstimation& sensors = parameters.side_slip;
@@ -155,12 +164,15 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
 
   for (long k = 0; k <= steps; ++k) {
     const double t = static_cast<double>(k) * parameters.control_period_s;
+    bool new_piece = false;
     if (piece < gear_switches.size() && t >= gear_switches[piece].stop_time_s - 1e-9) {
       ++piece;  // at rest on the cusp: on to the next piece
       active = plan->piece(piece).path.get();
       travel_offset = plan->piece(piece).gear == Gear::reverse ? pi : 0.0;
       rear_hint = {};
       front_hint = {};
+      planner_hint = {};
+      new_piece = true;
       state.vx_mps = 0.0;  // the profile's exact 0 (the integration leaves rounding)
       if (const Status status = system.set_path(plan->piece(piece).path); status != Status::ok) {
         result.status = status;
@@ -171,6 +183,23 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
       }
     }
     const Pose2 rear = rear_axle_pose(state, car);
+    if (planner_steps > 0 && (k % planner_steps == 0 || new_piece)) {
+      const double center = active->project(rear.position, planner_hint).arc_length_m;
+      std::shared_ptr<const Path> window;
+      try {
+        window = planner_window(*active, center, planner, planner_engine);
+      } catch (const std::exception& error) {
+        throw std::invalid_argument("SimulationParameters.planner: the window at t = " + text(t) +
+                                    " s cannot be fitted: " + error.what());
+      }
+      if (const Status status = system.set_path(std::move(window)); status != Status::ok) {
+        result.status = status;
+        result.stop_reason = "controller_error";
+        result.stop_detail = "at t = " + text(t) + " s set_path() of the planner's window " +
+                             "returned " + to_string(status);
+        break;
+      }
+    }
     SteeringSystemInput input;
     const Pose2 localized = pose_delay.deliver(k, rear);
     input.rear_axle_position = localized.position;

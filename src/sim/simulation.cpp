@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -10,12 +11,14 @@
 namespace smoothsteer {
 namespace {
 
+//! A broken rule of SimulationParameters: its field, value, rule and reference value.
+std::optional<Violation> bad(const char* field, double value, const char* rule,
+                             double reference = std::numeric_limits<double>::quiet_NaN()) {
+  return Violation{"SimulationParameters", "", field, value, rule, reference};
+}
+
 //! The rules of the plant-only imperfections (plant_imperfections.hpp).
 std::optional<Violation> imperfection_violation(const SimulationParameters& p) noexcept {
-  auto bad = [](const char* field, double value, const char* rule,
-                double reference = std::numeric_limits<double>::quiet_NaN()) {
-    return Violation{"SimulationParameters", "", field, value, rule, reference};
-  };
   auto within = [](double value, double lo, double hi) { return value >= lo && value <= hi; };
   const PlantScales& scales = p.plant_scales;
   if (!within(scales.mass, 0.5, 2.0)) {
@@ -84,6 +87,37 @@ std::optional<Violation> imperfection_violation(const SimulationParameters& p) n
   return std::nullopt;
 }
 
+//! The rules of the planner's windows (planner_windows.hpp).
+std::optional<Violation> planner_violation(const SimulationParameters& p) noexcept {
+  auto within = [](double value, double lo, double hi) { return value >= lo && value <= hi; };
+  const PlannerWindows& w = p.planner;
+  if (!within(w.period_s, 0.0, 10.0)) {
+    return bad("planner.period_s", w.period_s, "must be in [0, 10] s (0: off)");
+  }
+  const double periods = w.period_s / p.control_period_s;
+  if (w.active() && (periods < 1.0 - 1e-9 || std::abs(periods - std::round(periods)) > 1e-6)) {
+    return bad("planner.period_s", w.period_s,
+               "must be a whole multiple of control_period_s =", p.control_period_s);
+  }
+  if (!within(w.behind_m, 0.0, 1000.0)) {
+    return bad("planner.behind_m", w.behind_m, "must be in [0, 1000] m");
+  }
+  if (!within(w.spacing_m, 0.05, 50.0)) {
+    return bad("planner.spacing_m", w.spacing_m, "must be in [0.05, 50] m");
+  }
+  if (!within(w.ahead_m, 2.0 * w.spacing_m, 10000.0)) {
+    return bad("planner.ahead_m", w.ahead_m,
+               "must be in [2 spacing_m, 10000] m; 2 spacing_m =", 2.0 * w.spacing_m);
+  }
+  if (!within(w.jitter_std_m, 0.0, 1.0)) {
+    return bad("planner.jitter_std_m", w.jitter_std_m, "must be in [0, 1] m");
+  }
+  if (w.smoothing_tolerance_m && !within(*w.smoothing_tolerance_m, 0.0, 10.0)) {
+    return bad("planner.smoothing_tolerance_m", *w.smoothing_tolerance_m, "must be in [0, 10] m");
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 PlantIntegrator default_plant_integrator() noexcept {
@@ -95,10 +129,6 @@ PlantIntegrator default_plant_integrator() noexcept {
 }
 
 std::optional<Violation> SimulationParameters::first_violation() const noexcept {
-  auto bad = [](const char* field, double value, const char* rule,
-                double reference = std::numeric_limits<double>::quiet_NaN()) {
-    return Violation{"SimulationParameters", "", field, value, rule, reference};
-  };
   if (!std::isfinite(substep_s) || substep_s <= 0.0 || substep_s > 0.01) {
     return bad("substep_s", substep_s, "must be in (0, 0.01]");
   }
@@ -145,6 +175,7 @@ std::optional<Violation> SimulationParameters::first_violation() const noexcept 
     return bad("steering_offset_rad", steering_offset_rad, "must be in [-0.1, 0.1] rad");
   }
   if (const auto violation = imperfection_violation(*this)) return violation;
+  if (const auto violation = planner_violation(*this)) return violation;
   if (!std::isfinite(position_noise_std_m) || position_noise_std_m < 0.0) {
     return bad("position_noise_std_m", position_noise_std_m, "must be finite and >= 0");
   }

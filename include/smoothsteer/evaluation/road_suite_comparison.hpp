@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "smoothsteer/evaluation/results_table.hpp"
+#include "smoothsteer/sim/planner_windows.hpp"
 
 namespace smoothsteer {
 
@@ -22,15 +23,22 @@ struct RoadSuiteOptions {
   std::vector<std::string> vehicle_files;  //!< vehicle files (each road runs with each)
   //! Scenario `model` values: "dynamic" (single-track) and/or "double_track".
   std::vector<std::string> models{"dynamic", "double_track"};
-  //! "certified" (the scenario's own controller) and comparison controller names.
+  //! "certified" (the scenario's own controller), "steering_system" (the car's system built
+  //! from the car alone, the scenario's `controller: {type: steering_system}`) and comparison
+  //! controller names.
   std::vector<std::string> controllers;
+  //! Stack mode (planner_windows.hpp): with period_s > 0 every run's road arrives as the
+  //! planner's windows, once for each jitter of `jitters_m` (the windows' jitter_std_m; the
+  //! fit's tolerance as `planner` says). period_s = 0: the whole road at the start.
+  PlannerWindows planner;
+  std::vector<double> jitters_m{0.0};  //!< each in [0, 1] m; used in stack mode only
   //! When not empty, each run's trace (t, s, x, y, e, delta_cmd) goes to
   //! <trace_directory>/<road>/<car>_<model>_<controller>.csv (for scripts/road_suite_figures.py).
   std::string trace_directory;
   int threads = 1;  //!< worker threads, in [1, 256]
 
   //! Throws std::invalid_argument naming the field: empty lists, an unknown model or controller,
-  //! threads out of range.
+  //! threads or a jitter out of range.
   void validate() const;
 };
 
@@ -45,6 +53,9 @@ struct RoadSuiteResult {
 };
 
 RoadSuiteResult run_road_suite_comparison(const RoadSuiteOptions& options);
+
+//! The name of the car's system built from the car alone (no schedule file, no path).
+inline constexpr const char* road_suite_car_system = "steering_system";
 
 //! The default controller list: "certified" and every comparison controller.
 std::vector<std::string> road_suite_controller_names();

@@ -18,6 +18,7 @@
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/path/path_plan.hpp"
+#include "smoothsteer/sim/planner_windows.hpp"
 #include "smoothsteer/sim/plant_imperfections.hpp"
 #include "smoothsteer/sim/speed_profile.hpp"
 #include "smoothsteer/system/steering_system.hpp"
@@ -128,6 +129,9 @@ struct SimulationParameters {
   double heading_noise_std_rad = 0.0;  //!< std of Gaussian noise on psi [rad]
   std::uint64_t noise_seed = 1;        //!< seed of the noise generator (runs are reproducible)
   SideSlipEstimation side_slip;        //!< what the controller gets as the rear axle's slip
+  //! Stack mode: the road arrives as a planner's windows by set_path() (planner_windows.hpp);
+  //! its jitter has a generator of its own, so the sensors' noise stays the same.
+  PlannerWindows planner;
 
   //! Caps on what the input controls (so that no input can make a run allocate without bound):
   //! control steps of one run (duration_s / control_period_s) and plant sub-steps (duration_s /
