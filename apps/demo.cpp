@@ -1,9 +1,14 @@
-// smoothsteer demo: the C^1 controller (n = 2) brings a car from 40 m away, facing away from the
-// path, onto a curved path (line - left arc - right arc - line) on the kinematic model, and writes
-// the trace to demo_trace.csv (or the path given as the first argument), in the columns of
-// `smoothsteer run`'s trace.csv, and the reference path to demo_trace_path.csv beside it; plot
-// both with /usr/bin/python3 scripts/plot_trace.py demo_trace.csv.
+// smoothsteer demo: the car's SteeringSystem, built from vehicles/passenger_car.yaml and its
+// steering actuator (make_steering_system, docs/steering_system.md), drives the kinetic
+// single-track model (Magic-Formula tires) behind that actuator over a short road: a lane change,
+// then a curve, started 0.5 m off the path with a 0.1 rad heading error. It prints the car's
+// three steering limits beside the held command's maxima and writes
+//   TRACE.csv             the trace, in the columns of `smoothsteer run`'s trace.csv,
+//   TRACE_path.csv        the reference path,
+//   TRACE_limits.json     the car's limits and the figure's title,
+// for scripts/plot_trace.py, which scripts/demo.sh then runs to draw TRACE.png.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -14,7 +19,86 @@
 #include <string>
 
 #include "smoothsteer/io/trace_csv.hpp"
+#include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/smoothsteer.hpp"
+#include "smoothsteer/tuning/vehicle_steering_system.hpp"
+
+namespace {
+
+using namespace smoothsteer;
+
+constexpr double speed_mps = 10.0;
+const Pose2 start{{-10.0, -0.5}, 0.1};  // rear axle 0.5 m right of the path, 0.1 rad to the left
+constexpr double settle_time_s = 2.0;   // the engagement from the start is over by then
+
+//! 30 m straight (the car starts 10 m in), a lane change of 3.5 m to the left over 48 m (clothoids:
+//! curvature up to 1/82 m), 20 m straight, a left curve of radius 40 m through about 80 degrees, 30
+//! m straight.
+Path demo_road() {
+  return PathBuilder({-20.0, 0.0}, 0.0)
+      .line(30.0)
+      .clothoid(12.0, 0.0122)
+      .clothoid(24.0, -0.0122)
+      .clothoid(12.0, 0.0)
+      .line(20.0)
+      .clothoid(15.0, 1.0 / 40.0)
+      .arc(40.0, 1.0)
+      .clothoid(15.0, 0.0)
+      .line(30.0)
+      .build();
+}
+
+//! vehicles/passenger_car.yaml in the working directory (scripts/demo.sh runs in the source
+//! tree), else in the source tree the demo was built from.
+std::string vehicle_file() {
+  const std::string relative = "vehicles/passenger_car.yaml";
+  if (std::filesystem::exists(relative)) return relative;
+  return std::string(SMOOTHSTEER_SOURCE_DIR) + "/" + relative;
+}
+
+//! Largest |e| (rear axle) from `time_s` on: the lane change and the curve, past the engagement.
+double max_abs_error_from(const SimulationResult& result, double time_s) {
+  double largest = 0.0;
+  for (const TraceSample& sample : result.trace) {
+    if (sample.time_s >= time_s) largest = std::max(largest, std::abs(sample.lateral_error_m));
+  }
+  return largest;
+}
+
+std::string stem_of(const std::string& trace_path) {
+  return trace_path.substr(0, trace_path.size() - (trace_path.ends_with(".csv") ? 4 : 0));
+}
+
+void write_trace(const SimulationResult& result, const std::string& trace_path) {
+  io::TraceCsvWriter trace(trace_path + ".tmp");  // a temporary file and a rename
+  for (const TraceSample& sample : result.trace) trace.write(sample);
+  trace.close();
+  std::filesystem::rename(trace_path + ".tmp", trace_path);
+}
+
+void write_path(const Path& path, const std::string& file) {
+  std::ofstream out(file);
+  out.precision(9);
+  out << "x,y\n";
+  for (double s = 0.0; s <= path.length(); s += 0.25) {
+    const PathPoint point = path.evaluate(s);
+    out << point.position.x << ',' << point.position.y << '\n';
+  }
+  if (!out) throw std::runtime_error("cannot write " + file);
+}
+
+void write_limits(const VehicleParameters& vehicle, const std::string& file) {
+  std::ofstream out(file);
+  out.precision(9);
+  out << "{\"title\": \"passenger_car: SteeringSystem on the kinetic model, " << speed_mps
+      << " m/s\",\n \"max_steering_angle_rad\": " << vehicle.max_steering_angle_rad
+      << ",\n \"max_steering_rate_radps\": " << vehicle.max_steering_rate_radps
+      << ",\n \"max_steering_acceleration_radps2\": " << vehicle.max_steering_acceleration_radps2
+      << "}\n";
+  if (!out) throw std::runtime_error("cannot write " + file);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace smoothsteer;
@@ -25,58 +109,57 @@ int main(int argc, char** argv) {
                                                                                              : 1;
     }
     const std::string trace_path = argc > 1 ? argv[1] : "demo_trace.csv";
-    auto path = std::make_shared<const Path>(PathBuilder({0.0, 0.0}, 0.0)
-                                                 .line(30.0)
-                                                 .arc(25.0, pi / 2.0)
-                                                 .arc(40.0, -pi / 2.0)
-                                                 .line(60.0)
-                                                 .build());
-    ControllerParameters parameters;  // n = 2, lambda_veh = 2.7 m, kbar_l = 0.2 1/m, k_rob = 0.3
-    LeadWheelController controller(parameters, path);
+    const auto path = std::make_shared<const Path>(demo_road());
 
-    KinematicLoopOptions options;
-    options.speed_mps = 8.0;
-    options.duration_s = 40.0;
-    const Pose2 start{{-10.0, -40.0}, -2.5};  // 40 m right of the path, heading away from it
-    const KinematicLoopResult result = run_kinematic_closed_loop(controller, start, options);
-    {  // run's trace.csv columns (io/trace_csv.hpp), through a temporary file and a rename
-      io::TraceCsvWriter trace(trace_path + ".tmp");
-      for (const KinematicTraceSample& sample : result.trace) {
-        trace.write(kinematic_trace_sample(sample, result.options));
-      }
-      trace.close();
-      std::filesystem::rename(trace_path + ".tmp", trace_path);
-    }
-    // The reference path beside the trace, for scripts/plot_trace.py: <trace>_path.csv.
-    const std::string path_file =
-        trace_path.substr(0, trace_path.size() - (trace_path.ends_with(".csv") ? 4 : 0)) +
-        "_path.csv";
-    {
-      std::ofstream out(path_file);
-      out.precision(9);
-      out << "x,y\n";
-      for (double s = 0.0; s <= path->length(); s += 0.25) {
-        const PathPoint point = path->evaluate(s);
-        out << point.position.x << ',' << point.position.y << '\n';
-      }
-      if (!out) throw std::runtime_error("cannot write " + path_file);
-    }
+    VehicleDescription car;
+    car.vehicle = io::load_vehicle_file(vehicle_file());
+    car.actuator.max_angle_rad = car.vehicle.max_steering_angle_rad;  // 10 Hz, 10 ms dead time
+    car.actuator.max_rate_radps = car.vehicle.max_steering_rate_radps;
+    SteeringSystemOptions options;
+    options.max_speed_mps = 15.0;
+    SteeringSystem system = make_steering_system(car, path, options);  // set-up: may throw
 
-    const ChainBounds& bounds = controller.bounds();
-    std::printf("smoothsteer demo: n = %d, v = %.1f m/s, start 40 m off the path facing away\n",
-                parameters.chain.order, options.speed_mps);
-    std::printf("  status                     : %s\n", to_string(result.status));
-    std::printf("  final |e| (rear axle)      : %.4f m\n", std::abs(result.final_lateral_error_m));
-    std::printf("  max |delta_veh|            : %.4f rad (bound %.4f)\n",
-                result.max_abs_steering_rad, bounds.steering_angle_rad);
-    std::printf("  max |d delta_veh/dt|       : %.4f rad/s (bound %.4f)\n",
-                result.max_abs_steering_rate_radps,
-                bounds.steering_rate_per_meter * std::abs(options.speed_mps));
-    std::printf("  max |d2 delta_veh/dt2|     : %.4f rad/s^2\n",
-                result.max_abs_steering_acceleration_radps2);
-    std::printf("  trace                      : %s (%zu rows), path %s\n", trace_path.c_str(),
-                result.trace.size(), path_file.c_str());
-    return result.status == Status::ok ? 0 : 1;
+    const DynamicSingleTrack plant(car.vehicle);
+    SpeedProfile speed;
+    speed.initial_speed_mps = speed.final_speed_mps = speed_mps;
+    SimulationParameters simulation;
+    simulation.duration_s = 30.0;
+    const SimulationResult result =
+        simulate(*path, plant, car.actuator, speed, simulation, start, system);
+
+    MetricsParameters limits;
+    limits.steering_angle_limit_rad = car.vehicle.max_steering_angle_rad;
+    limits.steering_rate_limit_radps = car.vehicle.max_steering_rate_radps;
+    limits.steering_acceleration_limit_radps2 = car.vehicle.max_steering_acceleration_radps2;
+    const Metrics m = compute_metrics(result.trace, limits);
+
+    write_trace(result, trace_path);
+    const std::string stem = stem_of(trace_path);
+    write_path(*path, stem + "_path.csv");
+    write_limits(car.vehicle, stem + "_limits.json");
+
+    std::printf(
+        "smoothsteer demo: the passenger car's SteeringSystem (vehicles/passenger_car.yaml and "
+        "its actuator)\n  on the kinetic single-track model at %.1f m/s: a lane change, then a "
+        "curve, from 0.5 m and 0.1 rad off the path\n",
+        speed_mps);
+    std::printf("  stop                       : %s (%d steps, %.1f s)\n",
+                result.stop_reason.c_str(), m.steps, m.duration_s);
+    std::printf(
+        "  max |e| (rear axle)        : %.4f m at the start; %.4f m from t = %.0f s on (lane "
+        "change, curve)\n",
+        m.max_abs_rear_error_m, max_abs_error_from(result, settle_time_s), settle_time_s);
+    std::printf("  the held command against the car's limits:\n");
+    std::printf("  steering angle             : max %.4f rad      limit %.4f rad\n",
+                m.max_abs_command_rad, car.vehicle.max_steering_angle_rad);
+    std::printf("  steering rate              : max %.4f rad/s    limit %.4f rad/s\n",
+                m.held_rate_max_radps, car.vehicle.max_steering_rate_radps);
+    std::printf("  steering acceleration      : max %.4f rad/s^2  limit %.4f rad/s^2\n",
+                m.held_acceleration_max_radps2, car.vehicle.max_steering_acceleration_radps2);
+    std::printf("  trace                      : %s (%zu rows), path %s_path.csv\n",
+                trace_path.c_str(), result.trace.size(), stem.c_str());
+    const bool ok = result.status == Status::ok && !result.non_finite;
+    return ok ? 0 : 1;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "smoothsteer_demo: %s\n", error.what());
     return 2;

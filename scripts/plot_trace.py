@@ -11,7 +11,9 @@ Beside the trace it reads, when present:
                    controller the bounds come from its certificate, if the Python module
                    smoothsteer can be imported);
   path.csv, or <trace name>_path.csv   (written by `run --plot` and by the demo) for the
-                   reference path itself; without it the path is drawn from the closest points.
+                   reference path itself; without it the path is drawn from the closest points;
+  <trace name>_limits.json   (written by the demo, where there is no summary.json) for the
+                   title and the car's steering angle, rate and acceleration limits.
 Needs matplotlib and numpy (Debian python3-matplotlib, python3-numpy).
 """
 import csv
@@ -39,6 +41,15 @@ def read_columns(path):
 
 def read_summary(trace_path):
     file = os.path.join(os.path.dirname(os.path.abspath(trace_path)), "summary.json")
+    if not os.path.exists(file):
+        return None
+    with open(file) as handle:
+        return json.load(handle)
+
+
+def read_limits(trace_path):
+    """The demo's {title, max_steering_*} beside the trace, or None."""
+    file = os.path.splitext(os.path.abspath(trace_path))[0] + "_limits.json"
     if not os.path.exists(file):
         return None
     with open(file) as handle:
@@ -95,10 +106,15 @@ def certified_bounds(summary, speed, acceleration):
 
 
 def held_derivatives(t, delta):
-    """Rate and acceleration of the held command, differenced at the control period."""
-    period = np.diff(t, prepend=t[0] - (t[1] - t[0]) if len(t) > 1 else 1.0)
-    rate = np.diff(delta, prepend=delta[0]) / period
-    acceleration = np.diff(rate, prepend=rate[0]) / period
+    """Rate and acceleration of the held command, differenced at the control period, from rows
+    1 and 2 on (NaN before: no command precedes the first row), as the metrics held_rate_* and
+    held_acceleration_* (docs/metrics.md), so that the curves peak at the reported maxima."""
+    rate = np.full(len(t), np.nan)
+    acceleration = np.full(len(t), np.nan)
+    if len(t) > 1:
+        period = np.diff(t)
+        rate[1:] = np.diff(delta) / period
+        acceleration[2:] = np.diff(rate[1:]) / period[1:]
     return rate, acceleration
 
 
@@ -112,9 +128,22 @@ def draw_limits(axis, bound_t, bound, limit, unit):
         axis.axhline(-limit, color="r", linestyle=":", linewidth=1.0)
 
 
-def title(trace_path, summary, t):
+def draw_angle_limit(axis, limit, values):
+    """The angle limit as lines where it is within reach of the data, else in the legend only
+    (a passenger car's 1.07 rad would flatten a lane change's 0.05 rad)."""
+    if limit is None or not np.isfinite(limit):
+        return
+    if limit <= 3.0 * np.max(np.abs(values)):
+        draw_limits(axis, None, None, limit, "rad")
+    else:
+        axis.plot([], [], "r:", linewidth=1.0, label=f"vehicle limit {limit:g} rad (off scale)")
+
+
+def title(trace_path, summary, t, limits=None):
     speed = f"v = {t['v'][0]:.1f} m/s" if np.ptp(t["v"]) < 1e-9 else (
         f"v = {t['v'].min():.1f} .. {t['v'].max():.1f} m/s")
+    if limits and "title" in limits:
+        return limits["title"]
     if summary:
         return f"{summary['scenario']}: {summary['controller']}, {speed}"
     return f"{os.path.basename(trace_path)}: {speed}"
@@ -127,7 +156,8 @@ def main():
     out = sys.argv[2] if len(sys.argv) == 3 else os.path.splitext(trace_path)[0] + ".png"
     t = read_columns(trace_path)
     summary = read_summary(trace_path)
-    vehicle = summary["parameters"]["vehicle"] if summary else {}
+    limits = None if summary else read_limits(trace_path)
+    vehicle = summary["parameters"]["vehicle"] if summary else (limits or {})
     figure, axes = plt.subplots(5, 1, figsize=(9, 14),
                                 gridspec_kw={"height_ratios": [1.5, 1, 1, 1, 1]})
     x, y, label = reference_path(trace_path, t)
@@ -147,6 +177,8 @@ def main():
     axes[1].legend(loc="best", ncol=3)
     axes[2].plot(time, t["delta_cmd"], linewidth=1.0, label="delta_cmd")
     axes[2].plot(time, t["delta_actual"], linewidth=1.0, label="delta_actual")
+    if limits:  # the demo: the angle against the car's limit too
+        draw_angle_limit(axes[2], vehicle.get("max_steering_angle_rad"), t["delta_cmd"])
     axes[2].set_ylabel("steering angle [rad]")
     axes[2].legend(loc="best")
     held_rate, held_acceleration = held_derivatives(time, t["delta_cmd"])
@@ -166,7 +198,7 @@ def main():
     axes[4].legend(loc="best", fontsize=8, ncol=2)
     for axis in axes[1:]:
         axis.grid(alpha=0.3)
-    figure.suptitle(title(trace_path, summary, t))
+    figure.suptitle(title(trace_path, summary, t, limits))
     figure.tight_layout()
     # Atomic: write next to the target, then rename.
     handle, temporary = tempfile.mkstemp(suffix=".png", dir=os.path.dirname(os.path.abspath(out)))

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "progress_reporter.hpp"
 #include "smoothsteer/evaluation/engagement_study.hpp"
 #include "smoothsteer/evaluation/paper_figures.hpp"
 #include "smoothsteer/evaluation/reaching_benchmark.hpp"
@@ -33,6 +34,7 @@
 #include "smoothsteer/evaluation/scenario_comparison.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
+#include "worker_threads.hpp"
 
 namespace smoothsteer::cli {
 
@@ -63,6 +65,8 @@ struct CompareOptions {
                                             "lane_change_19.yaml", "circle_sections.yaml@8",
                                             "hairpin.yaml"};
   EngagementStudyOptions engagement;  // scenario_files: lane_change_{10,15,19} of --scenarios
+  bool quiet = false;                 //!< --quiet: no progress on stderr
+  int jobs = -1;  //!< -j: worker threads of the threaded benchmarks (0: all cores; -1: unset)
 };
 
 void emit(const ResultsTable& table, const CompareOptions& options, const std::string& stem) {
@@ -122,7 +126,9 @@ void add_engagement_command(CLI::App& compare, const std::shared_ptr<CompareOpti
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
   engagement->callback([options] {
+    const LongCommand progress("engagement", options->quiet);
     EngagementStudyOptions study = options->engagement;
+    study.threads = worker_threads(options->jobs, study.threads);
     study.scenario_files.clear();
     for (const char* speed : {"10", "15", "19"}) {
       study.scenario_files.push_back(options->scenario_directory + "/lane_change_" + speed +
@@ -181,7 +187,9 @@ void add_road_suite_command(CLI::App& compare, const std::shared_ptr<CompareOpti
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
   road->callback([options] {
+    const LongCommand progress("road suite", options->quiet);
     RoadSuiteOptions suite = options->road_suite;
+    suite.threads = worker_threads(options->jobs, suite.threads);
     if (!options->plant.empty()) suite.models = {options->plant};
     if (suite.road_files.empty()) {
       const std::filesystem::path roads =
@@ -247,7 +255,9 @@ void add_robustness_command(CLI::App& compare, const std::shared_ptr<CompareOpti
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
   robustness->callback([options] {
+    const LongCommand progress("robustness", options->quiet);
     RobustnessOptions study = options->robustness;
+    study.threads = worker_threads(options->jobs, study.threads);
     if (!options->plant.empty()) study.models = {options->plant};
     for (const std::string& entry : options->robustness_files) {
       study.scenarios.push_back(robustness_scenario(entry, options->scenario_directory));
@@ -275,6 +285,12 @@ void add_compare_command(CLI::App& app) {
                    "plant of the reported runs: dynamic (single-track) or double_track; default: "
                    "each scenario's own")
       ->check(CLI::IsMember({"dynamic", "double_track", "kinematic"}));
+  compare->add_flag("-q,--quiet", options->quiet, "no progress or summary line on stderr");
+  compare
+      ->add_option("-j,--jobs", options->jobs,
+                   "worker threads of engagement, road-suite and robustness (their --threads); 0: "
+                   "all cores; the other benchmarks run on one")
+      ->check(CLI::Range(0, 256));
   compare
       ->add_option("--paper-figures", options->paper_figures_file,
                    "the paper's published figures (CSV); empty: none")
@@ -289,6 +305,7 @@ void add_compare_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(10, 5000));
   roc->callback([options] {
+    const LongCommand progress("roc", options->quiet);
     ReachingBenchmarkOptions benchmark;
     benchmark.lateral_tolerance_m = options->lateral_tolerance_m;
     benchmark.heading_tolerance_rad = options->heading_tolerance_rad;
@@ -300,6 +317,7 @@ void add_compare_command(CLI::App& app) {
 
   CLI::App* lane = compare->add_subcommand("lane-change", "every controller on the lane change");
   lane->callback([options] {
+    const LongCommand progress("lane change", options->quiet);
     std::vector<std::string> files;
     for (const char* speed : {"10", "15", "19"}) {
       files.push_back(options->scenario_directory + "/lane_change_" + speed + ".yaml");
@@ -312,6 +330,7 @@ void add_compare_command(CLI::App& app) {
   CLI::App* parameters =
       compare->add_subcommand("parameters", "circle_sections with the settings of Sec. IV-A");
   parameters->callback([options] {
+    const LongCommand progress("parameters", options->quiet);
     emit(run_parameter_comparison(options->scenario_directory + "/circle_sections_paper.yaml"),
          *options, "parameter_radar");
   });
@@ -326,6 +345,7 @@ void add_compare_command(CLI::App& app) {
   tuning->add_option("--controllers", options->controllers, "controllers of the study")
       ->capture_default_str();
   tuning->callback([options] {
+    const LongCommand progress("tuning study", options->quiet);
     TuningRuleOptions rule;
     rule.budget = options->budget;
     rule.controllers = options->controllers;

@@ -1,5 +1,6 @@
 // smoothsteer: run scenarios, sweep parameters, tune from actuator limits, compare controllers.
-// Exit status (docs/cli.md): 0 success, 1 any error (bad command line, bad input, failed run).
+// Exit status (docs/cli.md): 0 success, 1 any error (bad command line, bad input, failed run),
+// 130 interrupted (SIGINT or SIGTERM during a long command; it has said what was finished).
 
 #include <cstdio>
 #include <exception>
@@ -8,6 +9,7 @@
 
 #include "commands.hpp"
 #include "smoothsteer/evaluation/controller_registration.hpp"
+#include "smoothsteer/runner/progress.hpp"
 #include "smoothsteer/runner/run_output.hpp"
 
 int main(int argc, char** argv) {
@@ -28,6 +30,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     app.exit(error);  // prints the message and the usage hint; CLI11's own codes are not ours
     return 1;
+  } catch (const smoothsteer::runner::Interrupted&) {
+    return 130;  // 128 + SIGINT, as a shell reports a process that Ctrl-C ended
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr,
                  "smoothsteer%s: out of memory (std::bad_alloc); an input asks for more than "

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "plotter.hpp"
+#include "progress_reporter.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/runner/run_output.hpp"
 #include "smoothsteer/runner/scenario.hpp"
@@ -97,6 +98,7 @@ struct SweepOptions {
   std::vector<std::string> vary;
   bool paper = false;
   int jobs = 0;
+  bool quiet = false;
 };
 
 void sweep(const SweepOptions& options) {
@@ -116,11 +118,11 @@ void sweep(const SweepOptions& options) {
                              std::to_string(runner::max_sweep_rows));
   }
   io::require_regular_file_or_absent(options.out, "--out");
-  const auto rows = runner::run_sweep(
-      options.scenario, options.overrides, sets, options.jobs, [](int done, int total) {
-        std::fprintf(stderr, "\rsweep: %d/%d runs done", done, total);
-        if (done == total) std::fprintf(stderr, "\n");
-      });
+  std::vector<runner::SweepRow> rows;
+  {
+    const LongCommand progress("sweep", options.quiet);
+    rows = runner::run_sweep(options.scenario, options.overrides, sets, options.jobs);
+  }
   const fs::path out(options.out);
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
   io::write_file_atomically(options.out, runner::sweep_csv(rows), "--out");
@@ -162,6 +164,8 @@ void add_run_commands(CLI::App& app) {
   sweep_command->add_flag("--paper", sweep_options->paper,
                           "the paper's variations: kbar_l -50%, lambda_l +300%, k_rob -33%");
   sweep_command->add_option("-j,--jobs", sweep_options->jobs, "worker threads (0 = all cores)");
+  sweep_command->add_flag("-q,--quiet", sweep_options->quiet,
+                          "no progress or summary line on stderr");
   sweep_command->callback([sweep_options] { sweep(*sweep_options); });
 }
 

@@ -8,6 +8,7 @@
 #include "smoothsteer/baselines/hosm_controller.hpp"
 #include "smoothsteer/baselines/parameter_checks.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/runner/progress.hpp"
 #include "smoothsteer/sim/kinematic_closed_loop.hpp"
 
 namespace smoothsteer {
@@ -99,7 +100,9 @@ ReachingBenchmarkResult run_reaching_benchmark(const ReachingBenchmarkOptions& o
   hosm_parameters.heading_bound_rad = result.hosm_heading_bound_rad;
   HosmController hosm(hosm_parameters, path);
 
+  runner::progress_expect(options.initial_headings_rad.size());
   for (const double heading : options.initial_headings_rad) {
+    runner::throw_if_interrupted("the reaching benchmark was");
     ReachingBenchmarkCase row;
     row.initial_heading_rad = heading;
     ReachingProblem problem;
@@ -122,6 +125,7 @@ ReachingBenchmarkResult run_reaching_benchmark(const ReachingBenchmarkOptions& o
     row.hosm_distance_m = h.distance;
     row.hosm_max_rate_per_m = h.max_rate_per_m;
     result.cases.push_back(std::move(row));
+    runner::progress_case_done();
   }
   return result;
 }

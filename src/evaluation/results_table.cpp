@@ -3,9 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "smoothsteer/io/atomic_output.hpp"
 
 namespace smoothsteer {
 
@@ -49,14 +50,9 @@ std::string ResultsTable::to_markdown() const {
 
 void ResultsTable::write(const std::string& directory, const std::string& stem) const {
   std::filesystem::create_directories(directory);
-  for (const auto& [extension, content] :
-       {std::pair{std::string(".csv"), to_csv()}, std::pair{std::string(".md"), to_markdown()}}) {
-    const std::string path = directory + "/" + stem + extension;
-    std::ofstream file(path);
-    if (!file) throw std::runtime_error("cannot open '" + path + "' for writing");
-    file << content;
-    if (!file) throw std::runtime_error("failed while writing '" + path + "'");
-  }
+  // Through a temporary file and a rename: an interrupted or failed run leaves the previous table.
+  io::write_file_atomically(directory + "/" + stem + ".csv", to_csv(), "--out");
+  io::write_file_atomically(directory + "/" + stem + ".md", to_markdown(), "--out");
 }
 
 }  // namespace smoothsteer

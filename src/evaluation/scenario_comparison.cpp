@@ -5,6 +5,7 @@
 
 #include "scenario_setup.hpp"
 #include "smoothsteer/baselines/comparison_controllers.hpp"
+#include "smoothsteer/runner/progress.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 
 namespace smoothsteer {
@@ -41,7 +42,9 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
     row.push_back(paper_figure);
     table.rows.push_back(std::move(row));
   };
+  runner::progress_expect(scenario_files.size() * (1 + comparison_controller_names().size()));
   for (const std::string& file : scenario_files) {
+    runner::throw_if_interrupted("the lane-change comparison was");
     const runner::Scenario scenario = runner::load_scenario(file, overrides);
     const double speed = scenario.speed.initial_speed_mps;
     const std::string speed_key = ResultsTable::number(speed, 1);
@@ -49,13 +52,16 @@ ResultsTable run_lane_change_comparison(const std::vector<std::string>& scenario
     add_row(speed, "scenario (" + scenario.controller["type"].as<std::string>() + ")",
             runner::run_scenario(scenario).metrics, "",
             paper.text("lane_change", speed_key, "proposed_max_e_m", 3));
+    runner::progress_case_done();
     for (const std::string& name : comparison_controller_names()) {
+      runner::throw_if_interrupted("the lane-change comparison was");
       // Every controller gets the limits the simulated actuator enforces, so that all rows are
       // compared under the same C1 and C2.
       auto controller = make_comparison_controller(name, detail::comparison_setup_for(scenario));
       const runner::RunResult run = runner::run_scenario(scenario, *controller);
       const SaturationStatistics& s = controller->saturation();
       add_row(speed, name, run.metrics, std::to_string(s.limited), "");
+      runner::progress_case_done();
     }
   }
   table.notes = {
@@ -93,9 +99,12 @@ ResultsTable run_parameter_comparison(const std::string& scenario_file) {
   table.header = {"setting",        "kbar_l",          "lambda_l_m",
                   "k_rob",          "reaching_time_s", "max_abs_e_lead_after_reaching_m",
                   "std_rate_radps", "std_accel_radps2"};
+  runner::progress_expect(settings.size());
   for (const Setting& setting : settings) {
+    runner::throw_if_interrupted("the parameter comparison was");
     const runner::Scenario scenario = runner::load_scenario(scenario_file, setting.overrides);
     const runner::RunResult run = runner::run_scenario(scenario);
+    runner::progress_case_done();
     const Metrics& m = run.metrics;
     table.rows.push_back(
         {setting.name,

@@ -9,6 +9,7 @@
 
 #include "smoothsteer/baselines/parameter_checks.hpp"
 #include "smoothsteer/evaluation/certified_route.hpp"
+#include "smoothsteer/runner/progress.hpp"
 
 namespace smoothsteer {
 
@@ -138,6 +139,26 @@ void TuningRuleOptions::validate() const {
   }
 }
 
+namespace {
+
+//! Runs of the whole study: each controller's grid on every training scenario, then the chosen
+//! gains on every held-out one (the count the progress display expects).
+std::size_t study_runs(const TuningRuleOptions& options, std::size_t training,
+                       std::size_t held_out) {
+  std::size_t runs = 0;
+  for (const std::string& controller : options.controllers) {
+    const std::vector<GainAxis> axes = gain_axes(controller);
+    std::size_t configurations = 1;
+    if (!axes.empty()) {
+      for (int count : grid_shape(options.budget, axes.size())) configurations *= count;
+    }
+    runs += configurations * training + held_out;
+  }
+  return runs;
+}
+
+}  // namespace
+
 TuningRuleResult run_tuning_rule(const std::vector<runner::Scenario>& training,
                                  const std::vector<runner::Scenario>& held_out,
                                  const TuningRuleOptions& options) {
@@ -150,6 +171,7 @@ TuningRuleResult run_tuning_rule(const std::vector<runner::Scenario>& training,
   result.options = options;
   for (const runner::Scenario& s : training) result.training.push_back(s.name);
   for (const runner::Scenario& s : held_out) result.held_out.push_back(s.name);
+  runner::progress_expect(study_runs(options, training.size(), held_out.size()));
   for (const std::string& controller : options.controllers) {
     const std::vector<GainAxis> axes = gain_axes(controller);
     const std::vector<int> shape =
@@ -175,8 +197,10 @@ TuningRuleResult run_tuning_rule(const std::vector<runner::Scenario>& training,
       long violations = 0;
       double worst = 0.0, rate_sum = 0.0;
       for (const runner::Scenario& scenario : training) {
+        runner::throw_if_interrupted("the tuning study was");
         const ScenarioScore s =
             score_configuration(scenario, controller, gains, options.divergence_m);
+        runner::progress_case_done();
         admissible = admissible && s.admissible();
         failed += (s.diverged || s.infeasible) ? 1 : 0;
         violations += s.held_above_limits();
@@ -199,8 +223,10 @@ TuningRuleResult run_tuning_rule(const std::vector<runner::Scenario>& training,
     tuned.admissible = !std::get<0>(best);
     tuned.training_worst_max_abs_e_m = std::get<3>(best);
     for (const runner::Scenario& scenario : held_out) {
+      runner::throw_if_interrupted("the tuning study was");
       tuned.held_out.push_back(
           score_configuration(scenario, controller, best_gains, options.divergence_m));
+      runner::progress_case_done();
     }
     result.controllers.push_back(std::move(tuned));
   }

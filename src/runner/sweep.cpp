@@ -6,6 +6,8 @@
 #include <sstream>
 #include <thread>
 
+#include "smoothsteer/runner/progress.hpp"
+
 namespace smoothsteer::runner {
 using io::ConfigError;
 namespace {
@@ -91,9 +93,11 @@ void run_parallel(std::size_t count, int threads, const std::function<void(std::
   std::atomic<int> done{0};
   std::mutex progress_mutex;
   const int total = static_cast<int>(count);
+  progress_expect(count);
   auto worker = [&] {
-    for (std::size_t i = next++; i < count; i = next++) {
+    for (std::size_t i = next++; i < count && !progress_stop_requested(); i = next++) {
       task(i);
+      progress_case_done();
       const int finished = ++done;
       if (progress) {
         std::lock_guard lock(progress_mutex);
@@ -107,6 +111,7 @@ void run_parallel(std::size_t count, int threads, const std::function<void(std::
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < workers; ++t) pool.emplace_back(worker);
   for (std::thread& thread : pool) thread.join();
+  throw_if_interrupted("the parallel runs were");
 }
 
 std::vector<SweepRow> run_sweep(const std::string& scenario_file,

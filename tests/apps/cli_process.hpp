@@ -3,6 +3,7 @@
 //! no shell) in a chosen working directory, with extra environment variables, and captures
 //! their exit status, stdout and stderr.
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>

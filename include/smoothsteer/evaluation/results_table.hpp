@@ -17,7 +17,8 @@ struct ResultsTable {
   static std::string number(double value, int digits = 3);
   std::string to_csv() const;
   std::string to_markdown() const;
-  //! Writes <directory>/<stem>.csv and <stem>.md (creating the directory); throws
+  //! Writes <directory>/<stem>.csv and <stem>.md (creating the directory), each through a
+  //! temporary file and a rename (io::write_file_atomically); throws
   //! std::runtime_error naming the file on failure.
   void write(const std::string& directory, const std::string& stem) const;
 };

@@ -35,7 +35,9 @@ struct SweepRow {
 };
 
 //! Calls task(i) once for every i in [0, count) on `threads` worker threads (0 = all cores),
-//! `progress(done, count)` after each, serialised. `task` must not throw.
+//! `progress(done, count)` after each, serialised. `task` must not throw. Each task also ticks
+//! the installed progress observer (progress.hpp); once it asks to stop, no new task starts and
+//! Interrupted is thrown after every worker has stopped.
 void run_parallel(std::size_t count, int threads, const std::function<void(std::size_t)>& task,
                   const std::function<void(int, int)>& progress = {});
 
