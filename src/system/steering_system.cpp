@@ -54,6 +54,14 @@ std::optional<Violation> SteeringSystemParameters::first_violation() const noexc
       check.include(nested);
     }
   }
+  if (actuator) {
+    // The controller's model of the actuator: the simulator's sub-step rules do not apply to it.
+    check.require(
+        actuator->ideal || (std::isfinite(actuator->bandwidth_hz) && actuator->bandwidth_hz > 0.0),
+        "actuator.bandwidth_hz", actuator->bandwidth_hz, "must be finite and > 0");
+    check.require(actuator->dead_time_s >= 0.0 && actuator->dead_time_s <= 10.0,
+                  "actuator.dead_time_s", actuator->dead_time_s, "must be in [0, 10] s");
+  }
   check.require(certified_max_speed_mps > 0.0, "certified_max_speed_mps", certified_max_speed_mps,
                 "must be > 0 (+inf: certified at every speed)");
   return check.first();

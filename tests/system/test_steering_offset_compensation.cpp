@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/system/steering_offset_compensation.hpp"
+#include "smoothsteer/system/steering_system.hpp"
 #include "support/property.hpp"
 
 namespace smoothsteer {
@@ -235,6 +237,30 @@ TEST(SteeringOffsetCompensation, ForgetsAndKeepsAcrossReset) {
   compensation.forget();
   EXPECT_EQ(compensation.applied_offset_rad(), 0.0);
   EXPECT_EQ(compensation.sensor_bias_rad(), 0.0);
+}
+
+// The actuator model the system is given is checked like the rest of its parameters: a
+// bandwidth or a dead time no actuator has is named by its field, not taken into the prediction.
+TEST(SteeringOffsetCompensation, TheActuatorModelIsValidatedByField) {
+  SteeringSystemParameters parameters;
+  parameters.actuator = ActuatorParameters{};
+  EXPECT_EQ(parameters.validation_error(), "");
+  for (const double bandwidth : {-1.0, 0.0, std::numeric_limits<double>::quiet_NaN(),
+                                 std::numeric_limits<double>::infinity()}) {
+    parameters.actuator->bandwidth_hz = bandwidth;
+    EXPECT_NE(parameters.validation_error().find("actuator.bandwidth_hz"), std::string::npos)
+        << bandwidth << ": " << parameters.validation_error();
+  }
+  parameters.actuator = ActuatorParameters{};
+  for (const double dead_time : {-0.01, 10.5, std::numeric_limits<double>::quiet_NaN()}) {
+    parameters.actuator->dead_time_s = dead_time;
+    EXPECT_NE(parameters.validation_error().find("actuator.dead_time_s"), std::string::npos)
+        << dead_time << ": " << parameters.validation_error();
+  }
+  parameters.actuator = ActuatorParameters{};
+  parameters.actuator->ideal = true;  // an ideal actuator has no low-pass to check
+  parameters.actuator->bandwidth_hz = 0.0;
+  EXPECT_EQ(parameters.validation_error(), "");
 }
 
 }  // namespace
