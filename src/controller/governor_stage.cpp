@@ -85,8 +85,16 @@ double GovernorStage::blend(const ControllerParameters& parameters, const LeadWh
   const double near_layer = near_layer_.layer(layer, near_bound_, speed_magnitude_);
   const SwitchingResult near = dubins_switching_law(error.lateral_error_m, error.relative_heading,
                                                     near_bound_, near_layer, parameters);
+  // The far law also takes the lead from an error the near law's long linear zone would leave
+  // standing (SteeringGovernor::far_law_slip_lag_share).
+  const double handover_error =
+      std::max(layer, SteeringGovernor::far_law_slip_lag_share * error.slip_lag_m);
   const double wanted =
-      layer > 0.0 ? std::clamp(std::abs(near.sliding_variable) / layer - 1.0, 0.0, 1.0) : 1.0;
+      layer > 0.0 ? std::clamp(std::max(std::abs(near.sliding_variable) / layer,
+                                        std::abs(error.lateral_error_m) / handover_error) -
+                                   1.0,
+                               0.0, 1.0)
+                  : 1.0;
   far_share_ = std::max(wanted, far_share_ - step_length_m_ / SteeringGovernor::far_law_memory_m);
   const double curvature =
       far_share_ * error.far_law_curvature + (1.0 - far_share_) * near.curvature;

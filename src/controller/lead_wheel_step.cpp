@@ -130,7 +130,8 @@ double LeadWheelController::substep(const PeriodPlan& plan, bool first_substep,
                                        {.path_curvature = lead.projection.curvature,
                                         .lateral_error_m = lead.lateral_error,
                                         .relative_heading = lead.relative_heading,
-                                        .far_law_curvature = lead.law.curvature},
+                                        .far_law_curvature = lead.law.curvature,
+                                        .slip_lag_m = dynamics_.slip_lag_m},
                                        first_substep);
   if (first_substep) first = lead;
   // Stage 4, the split: kappa_ff moves towards its target at L_ff, linearly within the

@@ -77,6 +77,15 @@ struct SteeringGovernor {
   //! How far [m] the far law keeps the lead once an error called it (its share decays by 1 over
   //! this distance).
   static constexpr double far_law_memory_m = 50.0;
+  //! The far law also takes over as the lead wheel's error leaves the larger of the near law's
+  //! boundary layer and this share of the tires' slip lag (K_f + K_r) v^2 / g (fully at twice
+  //! it). At speed the certified layer's linear zone is tens of metres long (23 m at 15 m/s for
+  //! the passenger car), so a disturbance beyond kbar_sw (a gust, a stiffer tire) walks the car
+  //! off the path while the near law's sliding variable stays inside its layer. Scaling with the
+  //! slip lag keeps the far law, which rings against that lag at speed, away from the errors a
+  //! lane change leaves; smaller shares cost the 15 m/s lane change (0.02: 0.030 -> 0.042 m) or
+  //! the 19 m/s one with a mis-set slip observer (0.03: 0.32 -> 0.46 m) (docs/governor.md).
+  static constexpr double far_law_slip_lag_share = 0.05;
   //! What governed_parameters() derives the authority from (steering_governor.hpp): the car's
   //! steering angle limit [rad] and friction limit mu g [m/s^2]; +inf = none.
   double max_steering_angle_rad = std::numeric_limits<double>::infinity();

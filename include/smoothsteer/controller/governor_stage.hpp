@@ -36,6 +36,8 @@ class GovernorStage {
     double lateral_error_m = 0.0;    //!< e
     double relative_heading = 0.0;   //!< psi [rad]
     double far_law_curvature = 0.0;  //!< the law at the authority() this sub-step gave [1/m]
+    //! The single-track inversion's slip lag (K_f + K_r) v^2 / g [m] (dynamics_inversion.hpp).
+    double slip_lag_m = 0.0;
   };
 
   //! The chain restarts in stationary cornering at kappa_ff (a reset, a change of direction):
@@ -58,7 +60,9 @@ class GovernorStage {
   Authority authority(const ControllerParameters& parameters,
                       double feedforward_curvature) noexcept;
   //! The switching law's curvature: the far law blended with the certified near law as the
-  //! latter's sliding variable leaves its layer; `error.far_law_curvature` when ungoverned.
+  //! latter's sliding variable leaves its layer or the lead wheel's error leaves the hand-over
+  //! error (SteeringGovernor::far_law_slip_lag_share); `error.far_law_curvature` when
+  //! ungoverned.
   //! first_substep: the near layer observes the path's curvature once per period.
   double blend(const ControllerParameters& parameters, const LeadWheelError& error,
                bool first_substep) noexcept;
