@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   python3-numpy python3-scipy python3-matplotlib python3-dev python3-pybind11 pybind11-dev python3-pytest
   python3-distributed python3-pandas python3-tqdm python3-yaml python3-pil
+  python3-pip python3-venv python3-setuptools python3-wheel python3-skbuild
   clang-14 libclang-rt-14-dev
 )
 

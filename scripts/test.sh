@@ -8,11 +8,13 @@
 #      PUBLIC what its installed headers include,
 #   4. the standard-library core alone (-DSMOOTHSTEER_CORE_ONLY=ON: no yaml-cpp, Ipopt, Eigen,
 #      Boost),
-#   5. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow
+#   5. the Python package pip installs into a fresh venv, imported from outside the tree
+#      (scripts/test_python_package.sh),
+#   6. the suite again under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow
 #      included (asan preset, clang-14),
-#   6. every libFuzzer target for a bounded time from the seed corpus (scripts/fuzz.sh).
+#   7. every libFuzzer target for a bounded time from the seed corpus (scripts/fuzz.sh).
 # SMOOTHSTEER_PROPERTY_CASES sets the number of randomized cases per property (default 40; CI
-# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips steps 5 and 6.
+# uses more). SMOOTHSTEER_SKIP_ASAN=1 skips steps 6 and 7.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -43,6 +45,8 @@ cmake -S . -B build/core-only -DCMAKE_BUILD_TYPE=Release -DSMOOTHSTEER_WERROR=ON
   -DSMOOTHSTEER_CORE_ONLY=ON > /dev/null
 cmake --build build/core-only -j"$jobs" > /dev/null
 echo "core only: 1 passed, 0 failed"
+
+bash scripts/test_python_package.sh
 
 if [[ "${SMOOTHSTEER_SKIP_ASAN:-0}" != "1" ]]; then
   cmake --preset asan

@@ -40,8 +40,9 @@ bool stderr_is_terminal() {
   return isatty(STDERR_FILENO) == 1;
 }
 
-ProgressReporter::ProgressReporter(std::string label, bool quiet, bool terminal)
+ProgressReporter::ProgressReporter(std::string label, bool quiet, bool terminal, std::string unit)
     : label_(std::move(label)),
+      unit_(std::move(unit)),
       quiet_(quiet),
       terminal_(terminal),
       start_(Clock::now()),
@@ -74,8 +75,8 @@ void ProgressReporter::print_line(bool final_update) {
   // The last case ends the line, so the tables printed next start on a line of their own.
   const bool end = final_update || (total_ > 0 && done_ == total_);
   // Trailing blanks clear what a longer previous line left on the terminal.
-  std::fprintf(stderr, "\r%s: %zu/%zu runs, %s elapsed%s   %s", label_.c_str(), done_, total_,
-               duration_text(elapsed).c_str(), estimate.c_str(), end ? "\n" : "");
+  std::fprintf(stderr, "\r%s: %zu/%zu %s, %s elapsed%s   %s", label_.c_str(), done_, total_,
+               unit_.c_str(), duration_text(elapsed).c_str(), estimate.c_str(), end ? "\n" : "");
   std::fflush(stderr);
   last_print_ = Clock::now();
   line_open_ = !end;
@@ -88,14 +89,16 @@ void ProgressReporter::finish() {
     print_line(true);
     return;
   }
-  std::fprintf(stderr, "%s: %zu runs in %.0f s\n", label_.c_str(), done_, seconds_since(start_));
+  std::fprintf(stderr, "%s: %zu %s in %.0f s\n", label_.c_str(), done_, unit_.c_str(),
+               seconds_since(start_));
 }
 
 void ProgressReporter::report_interruption() {
   const std::lock_guard lock(mutex_);
   if (line_open_) std::fprintf(stderr, "\n");
   line_open_ = false;
-  std::fprintf(stderr, "interrupted: %zu of %zu runs done; no table written\n", done_, total_);
+  std::fprintf(stderr, "interrupted: %zu of %zu %s done; no table written\n", done_, total_,
+               unit_.c_str());
 }
 
 void ProgressReporter::end_line() {
@@ -104,8 +107,8 @@ void ProgressReporter::end_line() {
   line_open_ = false;
 }
 
-LongCommand::LongCommand(std::string label, bool quiet)
-    : reporter_(std::move(label), quiet, stderr_is_terminal()),
+LongCommand::LongCommand(std::string label, bool quiet, std::string unit)
+    : reporter_(std::move(label), quiet, stderr_is_terminal(), std::move(unit)),
       scope_(reporter_),
       uncaught_on_entry_(std::uncaught_exceptions()) {}
 

@@ -1,5 +1,5 @@
 #pragma once
-//! The one progress display of the long commands (compare, sweep; docs/cli.md "Progress"):
+//! The one progress display of the long commands (compare, sweep, tune; docs/cli.md "Progress"):
 //! on a terminal, "LABEL: 120/462 runs, 1m32s elapsed, ~4m10s left" rewritten in place a few
 //! times per second on stderr; otherwise one line at the end, "LABEL: 462 runs in 712 s", so CI
 //! logs stay short. Quiet prints neither. It also owns the interrupt: while a LongCommand is
@@ -19,8 +19,9 @@ namespace smoothsteer::cli {
 //! Counts finished cases and prints them; the observer the library's long work ticks.
 class ProgressReporter final : public runner::ProgressObserver {
  public:
-  //! `terminal`: rewrite one line in place; else print only the summary line at the end.
-  ProgressReporter(std::string label, bool quiet, bool terminal);
+  //! `terminal`: rewrite one line in place; else print only the summary line at the end. `unit`
+  //! names what is counted ("runs", "speeds").
+  ProgressReporter(std::string label, bool quiet, bool terminal, std::string unit = "runs");
 
   void expect(std::size_t cases) override;
   void case_done() override;
@@ -37,6 +38,7 @@ class ProgressReporter final : public runner::ProgressObserver {
   void print_line(bool final_update);
 
   std::string label_;
+  std::string unit_;
   bool quiet_;
   bool terminal_;
   std::chrono::steady_clock::time_point start_;
@@ -52,7 +54,7 @@ class ProgressReporter final : public runner::ProgressObserver {
 //! prints the summary, or the interruption line if a signal stopped the work.
 class LongCommand {
  public:
-  LongCommand(std::string label, bool quiet);
+  LongCommand(std::string label, bool quiet, std::string unit = "runs");
   ~LongCommand();
   LongCommand(const LongCommand&) = delete;
   LongCommand& operator=(const LongCommand&) = delete;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "progress_reporter.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
@@ -32,6 +33,7 @@ struct TuneArguments {
   std::string path_file;
   std::string certificate = "feedforward";
   TuningOptions options;
+  bool quiet = false;  //!< --quiet: no progress on stderr
 };
 
 //! Most speeds one schedule may hold.
@@ -118,13 +120,23 @@ void run_tune(const TuneArguments& arguments) {
   // The schedule writer renames its file into place: never over a device or a link.
   io::require_regular_file_or_absent(arguments.out, "--out");
   GainSchedule schedule;
-  if (options.certificate == Certificate::feedforward) {
-    schedule = compute_feedforward_schedule(vehicle, options, speeds);
-  } else {
-    StaticMapOptions map_options;
-    map_options.max_steering_angle_rad = std::max(map_options.max_steering_angle_rad,
-                                                  std::min(1.49, vehicle.max_steering_angle_rad));
-    schedule = compute_gain_schedule(vehicle, options, speeds, StaticMap(map_options));
+  {
+    // One count per grid speed; an interrupt stops between two speeds and writes nothing.
+    const LongCommand progress("tune", arguments.quiet, "speeds");
+    runner::progress_expect(speeds.size());
+    const SpeedSolved speed_solved = [] {
+      runner::progress_case_done();
+      runner::throw_if_interrupted("tune");
+    };
+    if (options.certificate == Certificate::feedforward) {
+      schedule = compute_feedforward_schedule(vehicle, options, speeds, speed_solved);
+    } else {
+      StaticMapOptions map_options;
+      map_options.max_steering_angle_rad = std::max(map_options.max_steering_angle_rad,
+                                                    std::min(1.49, vehicle.max_steering_angle_rad));
+      schedule =
+          compute_gain_schedule(vehicle, options, speeds, StaticMap(map_options), speed_solved);
+    }
   }
   io::write_schedule_csv(schedule, arguments.out);
   std::cout << "vehicle " << arguments.vehicle_file << ": lambda_veh " << vehicle.wheelbase_m
@@ -150,6 +162,7 @@ void add_tune_command(CLI::App& app) {
   tune->add_option("--speeds", arguments->speeds, "FIRST:LAST:STEP in m/s")->capture_default_str();
   tune->add_option("--out", arguments->out, "schedule CSV to write")->required();
   tune->add_option("--order", arguments->order, "n: 1 (C0) or 2 (C1)")->capture_default_str();
+  tune->add_flag("-q,--quiet", arguments->quiet, "no progress or summary line on stderr");
   tune->add_option("--max-steering-rate", arguments->max_steering_rate,
                    "steering rate limit [rad/s]; overrides the vehicle file");
   tune->add_option("--max-steering-acceleration", arguments->max_steering_acceleration,

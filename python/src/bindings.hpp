@@ -59,5 +59,13 @@ Vec2 to_vec2(const py::handle& point, const char* argument);
 //! Sets the attributes of `target` (a bound object) from keyword arguments; an unknown name
 //! raises TypeError naming it and the class.
 void set_attributes(py::object& target, const py::kwargs& keywords);
+//! A default T with the attributes `keywords` names set (set_attributes): the keyword
+//! constructor of the bound parameter structs.
+template <typename T>
+T from_keywords(const py::kwargs& keywords) {
+  py::object value = py::cast(T{});
+  set_attributes(value, keywords);
+  return value.cast<T>();
+}
 
 }  // namespace smoothsteer::python

@@ -44,13 +44,6 @@ void set_wheelbases(ControllerParameters& p, const std::vector<double>& values) 
   set_chain_wheelbases(p.chain, values);
 }
 
-template <typename Group>
-Group from_keywords(const py::kwargs& keywords) {
-  py::object object = py::cast(Group{});
-  set_attributes(object, keywords);
-  return object.cast<Group>();
-}
-
 //! A field of the table as Python sees it: float, int, bool or the enumeration.
 py::object field_to_python(const ParameterField& field, const ControllerParameters& p) {
   const double value = field.get(p);

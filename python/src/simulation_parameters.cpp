@@ -9,16 +9,6 @@
 #include "smoothsteer/sim/simulation.hpp"
 
 namespace smoothsteer::python {
-namespace {
-
-template <typename T>
-T from_keywords(const py::kwargs& keywords) {
-  py::object value = py::cast(T{});
-  set_attributes(value, keywords);
-  return value.cast<T>();
-}
-
-}  // namespace
 
 void bind_simulation_parameters(py::module_& m) {
   using S = PlantScales;

@@ -18,13 +18,6 @@
 namespace smoothsteer::python {
 namespace {
 
-template <typename T>
-T from_keywords(const py::kwargs& keywords) {
-  py::object value = py::cast(T{});
-  set_attributes(value, keywords);
-  return value.cast<T>();
-}
-
 //! One control period; a non-ok status raises ControllerError.
 SteeringSystemOutput update(SteeringSystem& system, const py::object& position, double heading_rad,
                             double speed_mps, double acceleration_mps2, double yaw_rate_radps,

@@ -70,13 +70,6 @@ GainSchedule tune(const VehicleLimits& vehicle, const std::vector<double>& speed
   return compute_gain_schedule(vehicle, options, speeds, StaticMap(map_options));
 }
 
-template <typename T>
-T from_keywords(const py::kwargs& keywords) {
-  py::object value = py::cast(T{});
-  set_attributes(value, keywords);
-  return value.cast<T>();
-}
-
 }  // namespace
 
 void bind_tuning(py::module_& m) {

@@ -8,7 +8,7 @@ import pandas as pd
 import yaml
 
 from conftest import ROOT
-from smoothsteer.campaign_cases import run_batch
+from smoothsteer.campaign.cases import run_batch
 
 BASE = ROOT / "scenarios" / "lane_change_15.yaml"
 

@@ -12,7 +12,7 @@ import yaml
 from campaign_support import write_spec
 from conftest import ROOT, python_environment
 from smoothsteer import campaign
-from smoothsteer.campaign_spec import CampaignSpecError
+from smoothsteer.campaign.spec import CampaignSpecError
 
 # A guard against a hang, far above the second a refused spec takes; not a timing assertion.
 HANG_GUARD_S = 300

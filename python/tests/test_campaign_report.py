@@ -8,7 +8,7 @@ import pytest
 import smoothsteer as ss
 from campaign_support import rows, write_spec
 from smoothsteer import campaign
-from smoothsteer.campaign_report import replay_command
+from smoothsteer.campaign.report import replay_command
 
 
 @pytest.fixture(scope="module")

@@ -14,10 +14,10 @@ import pytest
 from campaign_support import data_lines, fatal_batch, rows, slow_batch, write_spec
 from conftest import ROOT, python_environment
 from smoothsteer import campaign
-from smoothsteer.campaign_cases import run_batch
-from smoothsteer.campaign_results import ResultFile
-from smoothsteer.campaign_run import local_client
-from smoothsteer.campaign_yaml import CampaignSpecError
+from smoothsteer.campaign.cases import run_batch
+from smoothsteer.campaign.results import ResultFile
+from smoothsteer.campaign.run import local_client
+from smoothsteer.campaign.spec_file import CampaignSpecError
 
 
 @pytest.fixture(scope="module")

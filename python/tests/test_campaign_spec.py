@@ -9,7 +9,7 @@ import pytest
 from campaign_support import VARIABLES, write_spec
 from conftest import ROOT, python_environment
 from smoothsteer import campaign
-from smoothsteer.campaign_spec import CampaignSpecError
+from smoothsteer.campaign.spec import CampaignSpecError
 
 
 def changed_variable(key, distribution):

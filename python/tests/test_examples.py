@@ -6,6 +6,7 @@ import sys
 import pytest
 
 from conftest import ROOT, python_environment
+from readme_example import readme_python_block, run_readme_python_block
 
 EXAMPLES = sorted((ROOT / "examples").glob("[0-9][0-9]_*.py"))
 
@@ -26,11 +27,5 @@ def test_example_runs(example):
 
 def test_readme_python_loop_runs():
     """The README's closed loop in a dozen lines of Python runs and reaches the path."""
-    text = (ROOT / "README.md").read_text()
-    block = text.split("```python\n", 1)[1].split("```", 1)[0]
-    assert len(block.strip().splitlines()) <= 13
-    result = subprocess.run([sys.executable, "-c", block], cwd=ROOT, env=python_environment(),
-                            capture_output=True, text=True, timeout=120)
-    assert result.returncode == 0, result.stderr
-    error = float(result.stdout.split()[0])
-    assert abs(error) < 0.1, result.stdout
+    assert len(readme_python_block().strip().splitlines()) <= 13
+    run_readme_python_block(sys.executable, ROOT, env=python_environment())

@@ -104,22 +104,18 @@ SteeringSystem::SteeringSystem(const VehicleParameters& vehicle,
 void SteeringSystem::set_up(const SteeringSystemParameters& parameters) {
   parameters.validate();
   parameters_ = parameters;
-  lead_wheel_ = controller_->inner_lead_wheel();
   if (parameters_.slip_input == SlipInput::observer) {
     observer_.emplace(parameters_.observer);
     pending_observer_.emplace(parameters_.observer);
   }
-  // The compensation holds the command to the limits the lead wheel's governor certifies.
-  if (parameters_.compensate_steering_offset && parameters_.actuator && observer_ && lead_wheel_ &&
+  // The compensation holds the command to the car's limits the controller was given.
+  const std::optional<SteeringLimits> limits = controller_->car_steering_limits();
+  if (parameters_.compensate_steering_offset && parameters_.actuator && observer_ && limits &&
       parameters_.observer.max_steering_offset_rad > 0.0) {
-    const SteeringGovernor& governor = lead_wheel_->parameters().governor;
-    const SteeringLimits limits{.angle_rad = governor.max_steering_angle_rad,
-                                .rate_radps = governor.max_steering_rate_radps,
-                                .acceleration_radps2 = governor.max_steering_acceleration_radps2};
-    if (limits.is_valid() && std::isfinite(limits.rate_radps)) {
+    if (limits->is_valid() && std::isfinite(limits->rate_radps)) {
       compensation_.emplace(SteeringOffsetCompensationParameters{
           .actuator = *parameters_.actuator,
-          .limits = limits,
+          .limits = *limits,
           .max_offset_rad = parameters_.observer.max_steering_offset_rad});
     }
   }
@@ -256,7 +252,7 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   output.tracking = command.diagnostics;
   output.side_slip = slip;
   const double speed = std::abs(input.speed_mps);
-  output.active_limits = lead_wheel_ ? active_limits(*lead_wheel_, command, speed) : limit_none;
+  output.active_limits = controller_->active_limits(command, speed);
   if (parameters_.domain && path_demand_.beyond(*parameters_.domain, speed)) {
     output.active_limits |= limit_path_beyond_domain;
   }

@@ -169,7 +169,8 @@ ScheduleEntry solve_node(const SpeedProblem& problem) {
 //! speeds_mps[k] (they differ in path_curvature_bound and path_curvature_rate_bound only).
 GainSchedule feedforward_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
                                   const std::vector<TuningOptions>& at_speed,
-                                  const std::vector<double>& speeds_mps) {
+                                  const std::vector<double>& speeds_mps,
+                                  const SpeedSolved& speed_solved) {
   check_schedule_inputs(vehicle, options, speeds_mps);
   // The lead wheel's curvature rate on the reference path, per lead wheelbase (it depends on the
   // chain, not on the speed).
@@ -207,6 +208,7 @@ GainSchedule feedforward_schedule(const VehicleLimits& vehicle, const TuningOpti
       throw_infeasible({vehicle, here, v, best.lead_wheelbase_m}, best);
     }
     entries.push_back(best);
+    if (speed_solved) speed_solved();
   }
   // Certify the online blends as the box route does: entries k and k+1 mixed must hold at v_k;
   // otherwise shrink entry k's switching authority (it stays valid at v_k).
@@ -236,9 +238,11 @@ GainSchedule feedforward_schedule(const VehicleLimits& vehicle, const TuningOpti
 
 GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
                                           const TuningOptions& options,
-                                          const std::vector<double>& speeds_mps) {
+                                          const std::vector<double>& speeds_mps,
+                                          const SpeedSolved& speed_solved) {
   return feedforward_schedule(vehicle, options,
-                              std::vector<TuningOptions>(speeds_mps.size(), options), speeds_mps);
+                              std::vector<TuningOptions>(speeds_mps.size(), options), speeds_mps,
+                              speed_solved);
 }
 
 GainSchedule compute_domain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
@@ -255,7 +259,7 @@ GainSchedule compute_domain_schedule(const VehicleLimits& vehicle, const TuningO
     at_speed[k].path_curvature_bound = domain.curvature_at(speeds_mps[k]);
     at_speed[k].path_curvature_rate_bound = domain.curvature_rate_at(speeds_mps[k]);
   }
-  return feedforward_schedule(vehicle, options, at_speed, speeds_mps);
+  return feedforward_schedule(vehicle, options, at_speed, speeds_mps, {});
 }
 
 ControllerParameters parameters_for_vehicle(const VehicleLimits& vehicle, double speed_mps,

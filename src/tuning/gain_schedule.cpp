@@ -346,9 +346,10 @@ ControllerParameters schedule_entry_parameters(const TuningOptions& options,
 }
 
 GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
-                                   const std::vector<double>& speeds_mps, const StaticMap& map) {
+                                   const std::vector<double>& speeds_mps, const StaticMap& map,
+                                   const SpeedSolved& speed_solved) {
   if (options.certificate == Certificate::feedforward) {
-    return compute_feedforward_schedule(vehicle, options, speeds_mps);
+    return compute_feedforward_schedule(vehicle, options, speeds_mps, speed_solved);
   }
   check_schedule_inputs(vehicle, options, speeds_mps);
   if (options.order == 2 && vehicle.max_steering_angle_rad > map.options().max_steering_angle_rad) {
@@ -378,6 +379,7 @@ GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOpt
     const Problem problem{vehicle, options, v};
     entries.push_back(options.order == 1 ? solve_first_order(problem, required_q)
                                          : solve_second_order(problem, map, required_q));
+    if (speed_solved) speed_solved();
   }
   // Certify the online blends: on [v_{k-1}, v_k] parameters_at() mixes entries k and k+1, which
   // must hold at v_k. If a mid-blend fails (the feasible set is not convex in general), shrink

@@ -1,12 +1,14 @@
 // The feedforward route of the tuner (docs/tuning.md): for made-up vehicles and paths every
 // schedule entry, and every online blend of two entries, is certified within the vehicle's
 // angle, rate, acceleration and friction limits; infeasible limits name the speed and the limit;
-// the shipped car is feasible on the lane-change and circle_sections paths.
+// the shipped car is feasible on the lane-change and circle_sections paths; both routes tell
+// their progress hook of every speed and stop when it throws.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/tuning/gain_schedule.hpp"
@@ -141,6 +143,34 @@ TEST(FeedforwardSchedule, ParametersForYourCarHoldAtEveryLowerSpeed) {
   for (const double v : {0.5, 5.0, 10.0, 15.0}) expect_certified(car, p, v, 0.0);
   EXPECT_THROW(parameters_for_vehicle(car, 80.0, path), InfeasibleLimits);
   EXPECT_THROW(parameters_for_vehicle(car, -1.0, path), std::invalid_argument);
+}
+
+TEST(FeedforwardSchedule, BothRoutesReportEverySpeedAndStopWhenTheHookThrows) {
+  VehicleLimits car;
+  car.max_steering_acceleration_radps2 = 8.0;
+  TuningOptions feedforward;
+  TuningOptions box;
+  box.certificate = Certificate::box;
+  StaticMapOptions map_options;
+  map_options.max_steering_angle_rad = car.max_steering_angle_rad;
+  const StaticMap map(map_options);
+  const std::vector<double> speeds = speed_grid(1.0, 5.0, 0.25);
+  for (const TuningOptions& options : {feedforward, box}) {
+    SCOPED_TRACE(options.certificate == Certificate::box ? "box" : "feedforward");
+    std::size_t calls = 0;
+    const GainSchedule schedule =
+        compute_gain_schedule(car, options, speeds, map, [&calls] { ++calls; });
+    EXPECT_EQ(calls, speeds.size());
+    EXPECT_EQ(schedule.entries().size(), speeds.size());
+    // A hook that throws (the CLI's interrupt) ends the computation after that speed.
+    calls = 0;
+    const auto stop_at_third = [&calls] {
+      if (++calls == 3) throw std::runtime_error("stop");
+    };
+    EXPECT_THROW(compute_gain_schedule(car, options, speeds, map, stop_at_third),
+                 std::runtime_error);
+    EXPECT_EQ(calls, 3u);
+  }
 }
 
 }  // namespace

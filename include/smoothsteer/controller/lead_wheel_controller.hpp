@@ -57,7 +57,12 @@ class LeadWheelController final : public SteeringController {
   //! Clears the disturbance estimate (a new car, a wheel alignment, a test from scratch).
   void forget_disturbance_estimate() noexcept { disturbance_.forget(); }
   const char* name() const noexcept override { return "lead_wheel"; }
-  const LeadWheelController* inner_lead_wheel() const noexcept override { return this; }
+  //! The bounds the step's command is at (src/controller/active_limits.cpp): kbar_n, kbar_ff,
+  //! the friction guard's curvature at |v|, kbar_sw and the front angle's invariant set.
+  std::uint32_t active_limits(const ControllerOutput& output,
+                              double speed_mps) const noexcept override;
+  //! The governor's angle, rate and acceleration limits (SteeringGovernor).
+  std::optional<SteeringLimits> car_steering_limits() const noexcept override;
   //! Replanning (SteeringController::set_path): swaps the path and re-seeds the three hints;
   //! the chain state, direction and delay history carry on, so delta_veh stays continuous
   //! (src/controller/lead_wheel_set_path.cpp).

@@ -6,10 +6,13 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <numbers>
 #include <optional>
 
+#include "smoothsteer/controller/active_limits.hpp"
+#include "smoothsteer/controller/command_limiter.hpp"
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/status.hpp"
 
@@ -199,10 +202,21 @@ class SteeringController {
     (void)lead_curvature_disturbance;
     return false;
   }
-  //! The lead-wheel controller this is or runs (itself, or a gain schedule's), for diagnostics
-  //! and the car's limits (SteeringSystem's active limits and offset compensation); nullptr for
-  //! every other controller.
-  virtual const LeadWheelController* inner_lead_wheel() const noexcept { return nullptr; }
+  //! Which of its limits `output`, the command of the last update(), is at for |v| =
+  //! `speed_mps`: ActiveLimit bits (active_limits.hpp), which SteeringSystem reports. 0 for a
+  //! controller that names none.
+  virtual std::uint32_t active_limits(const ControllerOutput& output,
+                                      double speed_mps) const noexcept {
+    (void)output;
+    (void)speed_mps;
+    return limit_none;
+  }
+  //! The car's steering angle, rate and acceleration limits as the controller was given them
+  //! (the lead wheel's governor limits), which SteeringSystem's offset compensation holds its
+  //! command to as well; std::nullopt for a controller that is given none.
+  virtual std::optional<SteeringLimits> car_steering_limits() const noexcept {
+    return std::nullopt;
+  }
 
  protected:
   //! The controller's own step, called by update() with an input in range; `output` holds the

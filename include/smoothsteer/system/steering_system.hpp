@@ -34,6 +34,7 @@
 #include <optional>
 #include <string>
 
+#include "smoothsteer/controller/active_limits.hpp"
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/math/vec2.hpp"
@@ -47,8 +48,6 @@
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
 
 namespace smoothsteer {
-
-class LeadWheelController;
 
 //! Where the rear axle's side slip beta_r that the law steers comes from.
 enum class SlipInput {
@@ -115,31 +114,6 @@ struct SteeringSystemInput {
   //! (SteeringSystemParameters::estimate_pose_age).
   double pose_age_s = 0.0;
 };
-
-//! Which limits the command is at (a bit set; SteeringSystemOutput::active_limits). Derived from
-//! the lead-wheel controller's state after the step; 0 for other controllers.
-enum ActiveLimit : std::uint32_t {
-  limit_none = 0,
-  //! |kappa_n| at kbar_n: the lead wheel's whole curvature authority is used.
-  limit_lead_curvature = 1u << 0,
-  //! |kappa_ff| at kbar_ff: the feedforward is saturated.
-  limit_feedforward_bound = 1u << 1,
-  //! The friction guard (FrictionGuard::max_lateral_acceleration_mps2) binds at this speed.
-  limit_friction_guard = 1u << 2,
-  //! |kappa_n - kappa_ff| at or beyond kbar_sw: the switching part uses its certified authority.
-  limit_switching_bound = 1u << 3,
-  //! The chain's front angle delta_1 at its invariant-set bound (the steering angle limit).
-  limit_steering_angle = 1u << 4,
-  //! The path asks more curvature or curvature rate than the domain the system was certified
-  //! for allows at this speed (SteeringSystemParameters::domain): it is followed as well as
-  //! the limits allow.
-  limit_path_beyond_domain = 1u << 5,
-  //! |v| above SteeringSystemParameters::certified_max_speed_mps: the controller's certificate
-  //! does not cover this speed (the car's limits may still hold through the governor).
-  limit_beyond_certified_speed = 1u << 6,
-};
-//! "lead_curvature|friction_guard", or "none".
-std::string describe_active_limits(std::uint32_t limits);
 
 //! The rear axle's side slip as the system sees it.
 struct SideSlipDiagnostics {
@@ -240,8 +214,6 @@ class SteeringSystem {
 
   std::unique_ptr<SteeringController> owned_;
   SteeringController* controller_ = nullptr;
-  //! The lead-wheel controller in controller_ (itself or a schedule's), for active_limits.
-  const LeadWheelController* lead_wheel_ = nullptr;
   SteeringSystemParameters parameters_;
   std::optional<SideSlipObserver> observer_;
   //! The observer's next state, committed when the controller accepts the period.
@@ -255,9 +227,5 @@ class SteeringSystem {
   Vec2 last_position_{};               //!< the pose of the last update, to see a new one
   double last_heading_rad_ = 0.0;
 };
-
-//! ActiveLimit bits of a lead-wheel controller after its step at |v| = `speed_mps`.
-std::uint32_t active_limits(const LeadWheelController& controller, const ControllerOutput& output,
-                            double speed_mps) noexcept;
 
 }  // namespace smoothsteer

@@ -13,6 +13,7 @@
 //! Order n = 1 has no lambda_l and no acceleration bound: kbar_1 follows in closed form from C1
 //! and O1. n >= 3 is not supported (docs/tuning.md says how far the generalization goes).
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -152,11 +153,17 @@ class GainSchedule {
   std::vector<ScheduleEntry> entries_;
 };
 
+//! Called once per grid speed, after that speed's entry is solved, on the calling thread: a long
+//! grid's progress (`smoothsteer tune`, docs/cli.md "Progress"). An exception it throws stops the
+//! computation and propagates. The tuning library does no I/O of its own.
+using SpeedSolved = std::function<void()>;
+
 //! Solves O1-O4 at each speed (strictly increasing, > 0). Throws std::invalid_argument for bad
 //! inputs and InfeasibleLimits naming the first speed and the limit that binds. The map must
 //! cover the vehicle's steering angle (options().max_steering_angle_rad) for n = 2.
 GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOptions& options,
-                                   const std::vector<double>& speeds_mps, const StaticMap& map);
+                                   const std::vector<double>& speeds_mps, const StaticMap& map,
+                                   const SpeedSolved& speed_solved = {});
 
 //! The feedforward route (Certificate::feedforward, docs/tuning.md): at each speed the largest
 //! switching authority kbar_sw, with kbar_ff covering the path's curvature within the angle and
@@ -164,7 +171,8 @@ GainSchedule compute_gain_schedule(const VehicleLimits& vehicle, const TuningOpt
 //! the rate and acceleration limits. Needs no static map. Same errors as compute_gain_schedule.
 GainSchedule compute_feedforward_schedule(const VehicleLimits& vehicle,
                                           const TuningOptions& options,
-                                          const std::vector<double>& speeds_mps);
+                                          const std::vector<double>& speeds_mps,
+                                          const SpeedSolved& speed_solved = {});
 
 //! The feedforward route for a domain of paths instead of one (system/driving_domain.hpp): at
 //! each speed the path bounds are the domain's there, domain.curvature_at(v) and

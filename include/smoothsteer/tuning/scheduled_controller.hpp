@@ -48,7 +48,14 @@ class ScheduledController final : public SteeringController {
   bool set_matched_disturbance(double kappa_d) noexcept override {
     return controller_.set_matched_disturbance(kappa_d);
   }
-  const LeadWheelController* inner_lead_wheel() const noexcept override { return &controller_; }
+  //! The inner controller's, with the parameters of the current speed.
+  std::uint32_t active_limits(const ControllerOutput& output,
+                              double speed_mps) const noexcept override {
+    return controller_.active_limits(output, speed_mps);
+  }
+  std::optional<SteeringLimits> car_steering_limits() const noexcept override {
+    return controller_.car_steering_limits();
+  }
 
  private:
   GainSchedule schedule_;

@@ -100,7 +100,15 @@ InversionSlipGradients inversion_slip_gradients(const VehicleParameters& vehicle
 SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
                                      double actuator_group_delay_s, const PathDemand& path);
 
-//! The controller parameters make_steering_system() gives the schedule as its template.
+//! speed_compensation() of the car: its vehicle and its actuator's group delay.
+SpeedCompensation car_speed_compensation(const VehicleDescription& car, const PathDemand& path);
+
+//! The controller parameters of `options.controller` with what the car determines: the vehicle
+//! wheelbase, the slip gradients (options.slip_preview), the friction guard at mu g
+//! (options.friction_guard), the governor's limits (while it is enabled) and the Smith predictor's
+//! delay (options.actuator_delay_s, else the actuator's group delay). The one derivation from the
+//! car: make_steering_system() gives it the schedule as its template, and the scenario runner's
+//! controller types build their parameters with it.
 ControllerParameters steering_system_controller(const VehicleDescription& car,
                                                 const SteeringSystemOptions& options);
 

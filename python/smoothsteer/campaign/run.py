@@ -15,8 +15,8 @@ import os
 import time
 from dataclasses import dataclass
 
-from .campaign_cases import failed_row, run_batch
-from .campaign_results import ResultFile
+from .cases import failed_row, run_batch
+from .results import ResultFile
 
 CASE_FAILURES = 2  # losses of a case before it is written as failed
 MAX_BATCH = 32

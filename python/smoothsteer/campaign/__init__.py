@@ -17,9 +17,9 @@ its PNGs."""
 import argparse
 import sys
 
-from .campaign_run import CampaignRun, local_client, run_cases
-from .campaign_spec import CampaignSpec, load_spec
-from .campaign_yaml import CampaignSpecError
+from .run import CampaignRun, local_client, run_cases
+from .spec import CampaignSpec, load_spec
+from .spec_file import CampaignSpecError
 
 
 def _spec(spec):
@@ -34,7 +34,7 @@ def run_campaign(spec, out, scheduler=None, workers=None, client=None, serial=Fa
     `scheduler` (its address), else `serial=True` (this process), else a LocalCluster of
     `workers` processes (default: the machine's cores), closed at the end. batch_size: cases
     per task (default: the spec's, else about 8 tasks per worker, at most 32 cases).
-    batch_runner replaces campaign_cases.run_batch (tests)."""
+    batch_runner replaces cases.run_batch (tests)."""
     spec = _spec(spec)
     cluster = None
     if not serial and client is None:
@@ -63,7 +63,7 @@ def run_campaign(spec, out, scheduler=None, workers=None, client=None, serial=Fa
 
 def write_report(spec, out, replay_trace=True):
     """Writes DIR/report.md and its PNGs from DIR/results.csv; returns the report's path."""
-    from .campaign_report import write_report as write
+    from .report import write_report as write
 
     return write(_spec(spec), str(out), replay_trace=replay_trace)
 
@@ -109,6 +109,3 @@ def main(argv=None):
 
 __all__ = ["CampaignRun", "CampaignSpec", "CampaignSpecError", "load_spec", "run_campaign",
            "write_report", "main"]
-
-if __name__ == "__main__":
-    sys.exit(main())

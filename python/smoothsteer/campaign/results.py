@@ -12,8 +12,8 @@ import json
 import os
 import stat
 
-from .campaign_cases import cell, columns
-from .campaign_yaml import CampaignSpecError
+from .cases import cell, columns
+from .spec_file import CampaignSpecError
 
 RESULTS = "results.csv"
 METADATA = "campaign.json"

@@ -6,7 +6,7 @@ import textwrap
 import numpy as np
 
 import smoothsteer as ss
-from ._plotting import controller_label, plt, reference_path, save
+from .._plotting import controller_label, plt, reference_path, save
 
 PASSED, NOT_PASSED = "tab:blue", "tab:red"
 

@@ -1,16 +1,16 @@
 """The report of a campaign (docs/campaigns.md): DIR/report.md with the pass rate per
 criterion, percentiles of every metric, the worst cases per metric and every failure by kind,
-each with the `smoothsteer run` command that replays it, and the PNGs of campaign_figures."""
+each with the `smoothsteer run` command that replays it, and the PNGs of figures.py."""
 import json
 import os
 import shlex
 
 import numpy as np
 
-from . import _override_text
-from . import campaign_figures
-from .campaign_results import read_rows
-from .campaign_spec import display_path
+from .. import _override_text
+from . import figures as campaign_figures
+from .results import read_rows
+from .spec import display_path
 
 PERCENTILES = (50, 90, 99, 99.9)
 # Metrics whose smallest value is the worst when no criterion says otherwise.

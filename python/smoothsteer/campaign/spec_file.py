@@ -15,7 +15,7 @@ import stat
 
 import yaml
 
-from . import ConfigError
+from .. import ConfigError
 
 # A scenario file's numbers (docs/scenarios.md): decimal, magnitude at most 1e9.
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")

@@ -1,7 +1,7 @@
 """A campaign spec (docs/campaigns.md): a base scenario, distributions for scenario keys, the
 number of cases, a seed, the metrics to record and the criteria a case must pass.
 
-load_spec() checks everything before any case runs: the spec's own keys (campaign_yaml), then
+load_spec() checks everything before any case runs: the spec's own keys (spec_file), then
 the scenario's rules, by loading the base scenario through the scenario loader with the fixed
 overrides and each end of every variable's range applied as `--set` applies them. The first
 rejection names the spec's key and quotes the loader's message."""
@@ -9,10 +9,10 @@ import hashlib
 import json
 import os
 
-from . import ConfigError
-from . import load_scenario, run_scenario
-from .campaign_distributions import Variable
-from .campaign_yaml import CampaignSpecError, read
+from .. import ConfigError
+from .. import load_scenario, run_scenario
+from .distributions import Variable
+from .spec_file import CampaignSpecError, read
 
 KEYS = ("name", "description", "base", "cases", "seed", "batch_size", "overrides", "variables",
         "metrics", "criteria", "report")

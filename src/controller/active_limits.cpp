@@ -1,12 +1,13 @@
-// Which limit the lead-wheel controller's command is at (SteeringSystemOutput::active_limits):
-// read from the controller's state after its step, against the bounds it was given.
+// Which limit the lead-wheel controller's command is at (SteeringController::active_limits):
+// read from the controller's state after its step, against the bounds it was given; and the
+// car's limits it was given, which the steering system's offset compensation keeps as well.
 
 #include <cmath>
 #include <string>
 
+#include "smoothsteer/controller/active_limits.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
-#include "smoothsteer/system/steering_system.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -21,9 +22,9 @@ bool at_bound(double value, double bound) noexcept {
 
 }  // namespace
 
-std::uint32_t active_limits(const LeadWheelController& controller, const ControllerOutput& output,
-                            double speed_mps) noexcept {
-  const ControllerParameters& p = controller.parameters();
+std::uint32_t LeadWheelController::active_limits(const ControllerOutput& output,
+                                                 double speed_mps) const noexcept {
+  const ControllerParameters& p = parameters();
   const double lead = output.diagnostics.lead_curvature;
   const double feedforward = output.diagnostics.feedforward_curvature;
   std::uint32_t limits = limit_none;
@@ -51,10 +52,17 @@ std::uint32_t active_limits(const LeadWheelController& controller, const Control
       at_bound(lead - feedforward, p.switching_curvature_bound())) {
     limits |= limit_switching_bound;
   }
-  if (p.chain.order > 0 && at_bound(controller.chain_angles()[0], controller.bounds().angle[0])) {
+  if (p.chain.order > 0 && at_bound(chain_angles()[0], bounds().angle[0])) {
     limits |= limit_steering_angle;
   }
   return limits;
+}
+
+std::optional<SteeringLimits> LeadWheelController::car_steering_limits() const noexcept {
+  const SteeringGovernor& governor = parameters().governor;
+  return SteeringLimits{.angle_rad = governor.max_steering_angle_rad,
+                        .rate_radps = governor.max_steering_rate_radps,
+                        .acceleration_radps2 = governor.max_steering_acceleration_radps2};
 }
 
 std::string describe_active_limits(std::uint32_t limits) {

@@ -1,7 +1,7 @@
 """Cases per second of a campaign: a plain loop over run_scenario() in one process against the
 campaign in this process and on a LocalCluster of 1 and 2 workers (docs/benchmarks.md).
 
-    PYTHONPATH=build/ci/python /usr/bin/python3 -m smoothsteer.campaign_benchmark \
+    PYTHONPATH=build/ci/python /usr/bin/python3 -m smoothsteer.campaign.benchmark \
         docs/campaigns/lane_change.yaml --cases 400
 
 Every configuration runs the same cases 0 .. N-1 of the spec into a fresh directory, and the
@@ -19,9 +19,9 @@ import time
 
 import numpy as np
 
-from . import run_scenario
-from .campaign_run import local_client, run_cases
-from .campaign_spec import load_spec
+from .. import run_scenario
+from .run import local_client, run_cases
+from .spec import load_spec
 
 
 def plain_loop(spec, cases):
@@ -33,7 +33,7 @@ def plain_loop(spec, cases):
 
 
 def _mean_elapsed(out, spec):
-    from .campaign_results import read_rows
+    from .results import read_rows
 
     return float(read_rows(out, spec)["elapsed_s"].mean())
 

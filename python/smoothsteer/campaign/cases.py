@@ -8,8 +8,8 @@ import json
 import math
 import time
 
-from . import run_scenario
-from .campaign_spec import DERIVED_METRICS
+from .. import run_scenario
+from .spec import DERIVED_METRICS
 
 # The run reached the end of its path or its duration; anything else is a failure of the case.
 COMPLETED_STOPS = ("path_end", "duration")
