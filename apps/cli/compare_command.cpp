@@ -14,6 +14,8 @@
 //                 it: docs/results/road_suite_stack.md)
 //   robustness    every controller under a car's imperfections, acting on the plant only
 //                 (docs/results/robustness.md)
+//   corners       the tight corners where the steering rate binds: certified vs baselines vs
+//                 the optimal-control reference (docs/corners.md)
 // --plant dynamic|double_track sets the plant of the reported runs (lane-change, the tuning
 // study's held-out scenarios; the training keeps its scenarios' plant: the held-out plant).
 // Options of `compare` work before or after the sub-command (`compare parameters -o DIR`).
@@ -32,6 +34,7 @@
 #include "smoothsteer/evaluation/road_suite_comparison.hpp"
 #include "smoothsteer/evaluation/robustness_comparison.hpp"
 #include "smoothsteer/evaluation/scenario_comparison.hpp"
+#include "smoothsteer/evaluation/tight_corners.hpp"
 #include "smoothsteer/evaluation/tuning_rule.hpp"
 #include "smoothsteer/io/atomic_output.hpp"
 #include "worker_threads.hpp"
@@ -65,6 +68,7 @@ struct CompareOptions {
                                             "lane_change_19.yaml", "circle_sections.yaml@8",
                                             "hairpin.yaml"};
   EngagementStudyOptions engagement;  // scenario_files: lane_change_{10,15,19} of --scenarios
+  TightCornerOptions corners;         // corners: shipped_tight_corners() of --scenarios
   bool quiet = false;                 //!< --quiet: no progress on stderr
   int jobs = -1;  //!< -j: worker threads of the threaded benchmarks (0: all cores; -1: unset)
 };
@@ -268,6 +272,28 @@ void add_robustness_command(CLI::App& compare, const std::shared_ptr<CompareOpti
   });
 }
 
+void add_corners_command(CLI::App& compare, const std::shared_ptr<CompareOptions>& options) {
+  CLI::App* corners = compare.add_subcommand(
+      "corners", "the tight corners against the best baseline and the optimal-control reference");
+  TightCornerOptions& defaults = options->corners;
+  corners->add_option("--baselines", defaults.baselines, "baselines (default: the tuning study's)");
+  corners->add_option("--bound-step", defaults.bound_time_step_s, "reference's time grid [s]")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-3, 0.05));
+  corners->add_option("--threads", defaults.threads, "worker threads")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  corners->callback([options] {
+    const LongCommand progress("corners", options->quiet);
+    TightCornerOptions study = options->corners;
+    study.threads = worker_threads(options->jobs, study.threads);
+    study.corners = shipped_tight_corners(options->scenario_directory);
+    const TightCornerResult result = run_tight_corner_study(study);
+    emit(result.table(), *options, "tight_corners");
+    emit(result.summary(), *options, "tight_corners_summary");
+  });
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
@@ -287,9 +313,10 @@ void add_compare_command(CLI::App& app) {
       ->check(CLI::IsMember({"dynamic", "double_track", "kinematic"}));
   compare->add_flag("-q,--quiet", options->quiet, "no progress or summary line on stderr");
   compare
-      ->add_option("-j,--jobs", options->jobs,
-                   "worker threads of engagement, road-suite and robustness (their --threads); 0: "
-                   "all cores; the other benchmarks run on one")
+      ->add_option(
+          "-j,--jobs", options->jobs,
+          "worker threads of engagement, road-suite, robustness and corners (their --threads); 0: "
+          "all cores; the other benchmarks run on one")
       ->check(CLI::Range(0, 256));
   compare
       ->add_option("--paper-figures", options->paper_figures_file,
@@ -362,6 +389,7 @@ void add_compare_command(CLI::App& app) {
   add_engagement_command(*compare, options);
   add_road_suite_command(*compare, options);
   add_robustness_command(*compare, options);
+  add_corners_command(*compare, options);
 }
 
 }  // namespace smoothsteer::cli

@@ -16,12 +16,27 @@
 
 namespace smoothsteer {
 
+double bound_speed_mps(const SpeedProfile& speed) noexcept {
+  constexpr double moving_mps = 0.1;
+  double slowest = HUGE_VAL;
+  auto consider = [&](double v) {
+    if (std::abs(v) >= moving_mps) slowest = std::min(slowest, std::abs(v));
+  };
+  if (speed.knots) {
+    for (const SpeedKnot& knot : *speed.knots) consider(knot.speed_mps);
+  } else {
+    consider(speed.initial_speed_mps);
+    if (speed.acceleration_mps2 > 0.0) consider(speed.final_speed_mps);
+  }
+  return std::isfinite(slowest) ? slowest : speed.initial_speed_mps;
+}
+
 EngagementBoundProblem engagement_bound_problem(const runner::Scenario& scenario,
                                                 double time_step_s) {
   EngagementBoundProblem problem;
   problem.path = scenario.path;
+  problem.speed_mps = bound_speed_mps(scenario.speed);
   problem.wheelbase_m = scenario.vehicle.wheelbase_m();
-  problem.speed_mps = scenario.speed.initial_speed_mps;
   problem.steering_angle_bound_rad = scenario.vehicle.max_steering_angle_rad;
   problem.steering_rate_bound_radps = scenario.vehicle.max_steering_rate_radps;
   problem.steering_acceleration_bound_radps2 = scenario.vehicle.max_steering_acceleration_radps2;
@@ -105,18 +120,23 @@ EngagementRun failed_run(const std::string& name, const std::string& error) {
   return result;
 }
 
-void run_case(const runner::Scenario& base_scenario, const std::string& file,
-              const EngagementStudyOptions& options, EngagementCase& out) {
+}  // namespace
+
+void run_engagement_case(const std::string& file, const EngagementStudyOptions& options,
+                         EngagementCase& out) {
   runner::Scenario scenario;
   try {
     // The overrides of `smoothsteer run --set`, applied to the file as the CLI does.
-    scenario = runner::load_scenario(
-        file, {"start.y_m=" + ResultsTable::number(out.offset_m, 6),
-               "start.heading_rad=" + ResultsTable::number(out.heading_rad, 6)});
+    std::vector<std::string> overrides{
+        "start.y_m=" + ResultsTable::number(out.offset_m, 6),
+        "start.heading_rad=" + ResultsTable::number(out.heading_rad, 6)};
+    if (out.speed_overridden) {
+      overrides.push_back("speed.initial_mps=" + ResultsTable::number(out.speed_mps, 6));
+    }
+    scenario = runner::load_scenario(file, overrides);
   } catch (const std::exception& error) {
     // Every row stays in the table, marked failed.
-    out.certified = failed_run(
-        "scenario (" + base_scenario.controller["type"].as<std::string>() + ")", error.what());
+    out.certified = failed_run("scenario", error.what());
     for (const std::string& name : options.baselines) {
       out.baselines.push_back(failed_run(name, error.what()));
     }
@@ -142,6 +162,12 @@ void run_case(const runner::Scenario& base_scenario, const std::string& file,
   }
   out.bound.controller = "lower_bound";
   out.bound.reaching_distance_m = std::nan("");
+  if (scenario.plan) {
+    // The transcription drives one way on one path; a change of gear is outside it.
+    out.bound.max_abs_e_m = std::nan("");
+    out.bound.note = "no bound: the path changes gear";
+    return;
+  }
   try {
     const EngagementBoundProblem problem =
         engagement_bound_problem(scenario, options.bound_time_step_s);
@@ -158,7 +184,13 @@ void run_case(const runner::Scenario& base_scenario, const std::string& file,
   }
 }
 
-}  // namespace
+std::vector<std::string> default_study_baselines() {
+  std::vector<std::string> names;
+  for (const std::string& name : study_controller_names()) {
+    if (name != certified_controller_name) names.push_back(name);
+  }
+  return names;
+}
 
 std::size_t EngagementCase::best_baseline() const noexcept {
   std::size_t best = 0;
@@ -179,24 +211,19 @@ double EngagementCase::ratio_to_bound() const noexcept {
 
 EngagementStudyResult run_engagement_study(const EngagementStudyOptions& input) {
   EngagementStudyOptions options = input;
-  if (options.baselines.empty()) {
-    for (const std::string& name : study_controller_names()) {
-      if (name != certified_controller_name) options.baselines.push_back(name);
-    }
-  }
+  if (options.baselines.empty()) options.baselines = default_study_baselines();
   options.validate();
   const auto begin = std::chrono::steady_clock::now();
   EngagementStudyResult result;
   result.options = options;
-  std::vector<runner::Scenario> scenarios;
   std::vector<std::size_t> scenario_of_case;
   for (std::size_t f = 0; f < options.scenario_files.size(); ++f) {
-    scenarios.push_back(runner::load_scenario(options.scenario_files[f]));
+    const runner::Scenario scenario = runner::load_scenario(options.scenario_files[f]);
     for (double offset : options.offsets_m) {
       for (double heading : options.headings_rad) {
         EngagementCase c;
-        c.scenario = scenarios.back().name;
-        c.speed_mps = scenarios.back().speed.initial_speed_mps;
+        c.scenario = scenario.name;
+        c.speed_mps = scenario.speed.initial_speed_mps;
         c.offset_m = offset;
         c.heading_rad = heading;
         result.cases.push_back(std::move(c));
@@ -205,8 +232,7 @@ EngagementStudyResult run_engagement_study(const EngagementStudyOptions& input) 
     }
   }
   runner::run_parallel(result.cases.size(), options.threads, [&](std::size_t i) {
-    const std::size_t f = scenario_of_case[i];
-    run_case(scenarios[f], options.scenario_files[f], options, result.cases[i]);
+    run_engagement_case(options.scenario_files[scenario_of_case[i]], options, result.cases[i]);
   });
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();

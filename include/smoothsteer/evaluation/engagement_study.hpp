@@ -15,11 +15,17 @@
 
 namespace smoothsteer {
 
-//! The bound problem of a scenario: its path, start pose, speed (the profile's initial speed,
-//! held), wheelbase and the car's steering limits (vehicle file), over the scenario's duration
-//! or until the rear axle's closest point reaches the end of an open path, whichever is first.
+//! The bound problem of a scenario: its path, start pose, speed, wheelbase and the car's steering
+//! limits (vehicle file), over the scenario's duration or until the rear axle's closest point
+//! reaches the end of an open path, whichever is first. The speed is held constant: a constant
+//! profile's speed, else the profile's slowest moving speed (bound_speed_mps).
 EngagementBoundProblem engagement_bound_problem(const runner::Scenario& scenario,
                                                 double time_step_s = 0.04);
+
+//! The speed the bound holds: a constant profile's, else the slowest |v| >= 0.1 m/s among the
+//! profile's knots or ramp ends. In arc length a slower car has more steering rate and
+//! acceleration per metre, so holding the slowest speed can only lower the bound.
+double bound_speed_mps(const SpeedProfile& speed) noexcept;
 
 //! Travel of the rear axle from the start to the first row after which its |e| stays below
 //! `threshold_m` to the end of the trace [m]; 0 if it never leaves, -1 if the last row is above.
@@ -55,6 +61,8 @@ struct EngagementRun {
 struct EngagementCase {
   std::string scenario;
   double speed_mps = 0.0;
+  //! Overrides speed.initial_mps of the file with speed_mps (a constant-speed file).
+  bool speed_overridden = false;
   double offset_m = 0.0;
   double heading_rad = 0.0;
   EngagementRun certified;               //!< the scenario's own controller
@@ -79,6 +87,15 @@ struct EngagementStudyResult {
   //! baseline and <= 1.5x the bound, the worst cases, and every controller's medians.
   std::string summary_markdown() const;
 };
+
+//! Every real-time baseline of the tuning study (the default of options.baselines).
+std::vector<std::string> default_study_baselines();
+
+//! Runs one case of `file` in place: the file with the case's start (and speed, when
+//! speed_overridden), its own controller, options.baselines and the bound. A path with gear
+//! changes gets no bound (NaN, note says why). Errors are recorded in the case, not thrown.
+void run_engagement_case(const std::string& file, const EngagementStudyOptions& options,
+                         EngagementCase& c);
 
 //! Runs every case (in parallel on options.threads). Throws std::invalid_argument for invalid
 //! options, io::ConfigError for a scenario that does not load.
