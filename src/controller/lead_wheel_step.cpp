@@ -192,11 +192,14 @@ void LeadWheelController::write_diagnostics(const ControllerInput& input,
                                             const LeadWheelState& first, double lead_curvature,
                                             ControllerOutput& output) noexcept {
   // The real axles' errors; the rear axle's path also gates the disturbance estimate.
-  const PathProjection rear_projection = path_->project(input.rear_axle_position, rear_hint_);
+  // Far from the path the lead wheel's projection, just made, bounds the axles' global searches.
+  const Path::ProjectionOptions near_lead{.nearby = &lead_hint_};
+  const PathProjection rear_projection =
+      path_->project(input.rear_axle_position, rear_hint_, near_lead);
   disturbance_.set_rear_path(rear_projection.curvature, rear_projection.lateral_error_m);
   const Vec2 front_axle = input.rear_axle_position + parameters_.chain.vehicle_wheelbase_m *
                                                          unit_from_heading(input.heading_rad);
-  const PathProjection front_projection = path_->project(front_axle, front_hint_);
+  const PathProjection front_projection = path_->project(front_axle, front_hint_, near_lead);
   TrackingDiagnostics& diagnostics = output.diagnostics;
   diagnostics.lateral_error_m = rear_projection.lateral_error_m;
   diagnostics.heading_error_rad =

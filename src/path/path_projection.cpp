@@ -14,7 +14,7 @@ namespace smoothsteer {
 
 PathProjection Path::project(Vec2 point) const noexcept {
   ProjectionHint unused;
-  return project_global(point, unused);
+  return project_global(point, unused, SearchSeed{});
 }
 
 PathProjection Path::project(Vec2 point, ProjectionHint& hint) const noexcept {
@@ -25,6 +25,7 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
                              const ProjectionOptions& options) const noexcept {
   const std::size_t count = segments_.size();
   if (count == 0) return {};
+  SearchSeed seed;
   if (hint.segment_index < count) {
     // Walk towards the side where the distance still decreases. Turning back means the local
     // minimum sits on the joint between the last two segments visited.
@@ -48,7 +49,10 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
       }
       // Farther than the trusted distance from the hint's segment: the point jumped or left the
       // path, and the global search (O(log N)) is cheaper than a long walk.
-      if (step == 0 && !(local.distance_m <= options.global_search_distance_m)) break;
+      if (step == 0 && !(local.distance_m <= options.global_search_distance_m)) {
+        seed = {index, local};
+        break;
+      }
       const int wanted = local.clamped_at_end ? 1 : (local.clamped_at_start ? -1 : 0);
       if (wanted == 0 || wanted == -direction) {
         settled = true;
@@ -72,7 +76,18 @@ PathProjection Path::project(Vec2 point, ProjectionHint& hint,
       return finish_projection(point, index, local, hint);
     }
   }
-  return project_global(point, hint);
+  return project_global(point, hint, nearer_seed(point, seed, options.nearby));
+}
+
+Path::SearchSeed Path::nearer_seed(Vec2 point, const SearchSeed& seed,
+                                   const ProjectionHint* hint) const noexcept {
+  if (hint == nullptr || hint->segment_index >= segments_.size()) return seed;
+  const SegmentProjection local = segments_[hint->segment_index].project_local(
+      point, hint->parameter, /*exhaustive=*/false, /*with_arc_length=*/false);
+  if (seed.segment_index < segments_.size() && !(local.distance_m < seed.local.distance_m)) {
+    return seed;
+  }
+  return {hint->segment_index, local};
 }
 
 ProjectionHint Path::reseed_hint(const Path& previous, const ProjectionHint& hint) const noexcept {
@@ -80,7 +95,7 @@ ProjectionHint Path::reseed_hint(const Path& previous, const ProjectionHint& hin
   if (hint.segment_index >= previous.segments_.size() || segments_.empty()) return seeded;
   const Vec2 where =
       previous.segments_[hint.segment_index].evaluate_parameter(hint.parameter).position;
-  project_global(where, seeded);
+  project_global(where, seeded, SearchSeed{});
   return seeded;
 }
 

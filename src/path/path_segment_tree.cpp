@@ -141,7 +141,8 @@ double Path::extension_distance(Vec2 point, bool start) const noexcept {
   return std::abs(cross(tangent, offset));
 }
 
-PathProjection Path::project_global(Vec2 point, ProjectionHint& hint) const noexcept {
+PathProjection Path::project_global(Vec2 point, ProjectionHint& hint,
+                                    const SearchSeed& seed) const noexcept {
   const std::size_t count = segments_.size();
   if (count == 0) return {};
 
@@ -151,6 +152,13 @@ PathProjection Path::project_global(Vec2 point, ProjectionHint& hint) const noex
   double best_distance = std::min(to_start, to_end);
   std::size_t best_index = ProjectionHint::none;
   SegmentProjection best;
+  // A seed (a point of the path near the query, from a warm start) bounds the search from the
+  // start: only boxes nearer than it are opened. Any point of the path is a valid bound.
+  if (seed.segment_index < count && seed.local.distance_m < best_distance) {
+    best_distance = seed.local.distance_m;
+    best = seed.local;
+    best_index = seed.segment_index;
+  }
 
   auto consider = [&](std::uint32_t i) {
     const PathSegment& segment = segments_[i];

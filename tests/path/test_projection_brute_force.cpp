@@ -206,6 +206,44 @@ TEST(ProjectionBruteForce, WarmProjectionFollowsOntoTheExtensions) {
   }
 }
 
+// Far from the path the warm start turns into a global search that its own hint's segment and a
+// nearby point's hint bound from the start. The nearby hint changes nothing of the result: with
+// it, the projection is the one without it (a warm walk's local closest point where the own hint
+// is near, else the global closest point), to the Newton search's slack on folding splines.
+TEST(ProjectionBruteForce, SeededGlobalSearchFindsTheGlobalClosestPoint) {
+  for (int c = 0; c < property_cases(); ++c) {
+    const auto seed = case_seed(c);
+    SCOPED_TRACE(seed_message(seed));
+    Random rng(seed + 71);
+    const Path path = random_folding_path(rng, rng.integer(0, 3));
+    for (int trial = 0; trial < 25; ++trial) {
+      const PathPoint at = path.evaluate(rng.uniform(0.0, path.length()));
+      const double offset = rng.uniform(-60.0, 60.0);
+      const Vec2 query =
+          at.position + offset * Vec2{-std::sin(at.heading_rad), std::cos(at.heading_rad)};
+      ProjectionHint own, nearby;
+      if (rng.coin()) path.project(random_query(rng, path), own);
+      if (rng.coin()) path.project(random_query(rng, path), nearby);
+      SCOPED_TRACE("query " + std::to_string(query.x) + ", " + std::to_string(query.y) +
+                   " own hint " + std::to_string(own.segment_index) + " nearby hint " +
+                   std::to_string(nearby.segment_index));
+      const bool cold = own.segment_index == ProjectionHint::none;
+      ProjectionHint unseeded_hint = own;
+      const PathProjection unseeded = path.project(query, unseeded_hint);
+      const PathProjection seeded =
+          path.project(query, own, Path::ProjectionOptions{.nearby = &nearby});
+      ASSERT_NEAR(std::abs(seeded.lateral_error_m), std::abs(unseeded.lateral_error_m),
+                  kNewtonSlack_m);
+      ASSERT_NEAR(norm(query - seeded.closest_point), std::abs(seeded.lateral_error_m), 1e-9);
+      // Without an own hint the search is global from the start, the nearby hint its bound.
+      if (cold) {
+        ASSERT_NEAR(std::abs(seeded.lateral_error_m), std::abs(path.project(query).lateral_error_m),
+                    kNewtonSlack_m);
+      }
+    }
+  }
+}
+
 TEST(ProjectionBruteForce, PointOnTheEndExtensionOfAUTurn) {
   // A point that once projected wrongly: (-100, 20) lies on the end extension of this U-turn.
   const Path path = PathBuilder({0, 0}, 0).line(100).arc(10, pi).line(50).build();

@@ -74,6 +74,11 @@ class Path {
     //! on lines and arcs); saves the quadrature on splines when only e, heading and curvature
     //! are needed, as for the controller's lead wheel.
     bool compute_arc_length = true;
+    //! The hint of another point projected close to this one in the same cycle (another wheel
+    //! of the same vehicle), or null. When the search turns global, the distance to its segment
+    //! bounds the search from the start: far from the path a cycle then descends the tree cold
+    //! once, not once per point. The result stays the global closest point.
+    const ProjectionHint* nearby = nullptr;
   };
 
   //! Largest |coordinate| and radius of a path [m] (ControllerInputRange::max_abs_coordinate_m);
@@ -214,7 +219,16 @@ class Path {
   //! the node's index.
   std::uint32_t build_tree(const std::vector<SegmentBox>& boxes, std::uint32_t first,
                            std::uint32_t count);
-  PathProjection project_global(Vec2 point, ProjectionHint& hint) const noexcept;
+  //! A point on the path and its segment: an upper bound that the global search starts from.
+  struct SearchSeed {
+    std::size_t segment_index = ProjectionHint::none;
+    SegmentProjection local;
+  };
+  PathProjection project_global(Vec2 point, ProjectionHint& hint,
+                                const SearchSeed& seed) const noexcept;
+  //! The nearer of `seed` and the warm projection from `hint` onto its segment.
+  SearchSeed nearer_seed(Vec2 point, const SearchSeed& seed,
+                         const ProjectionHint* hint) const noexcept;
   //! curvature_sample() for an index outside the samples: wrapped if closed, else 0.
   double curvature_sample_outside(long index) const noexcept;
   //! Distance from `point` to the start (start = true) or end extension half-line of an open
