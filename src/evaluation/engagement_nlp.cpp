@@ -90,11 +90,7 @@ class EngagementNlp final : public MinimumOfVariableNlp {
       row[4] = xb[4] - xa[4] - h_ * x[u_index(k)];
       a = b;
     }
-    Number* path_rows = g + state_count * n_;
-    for (int k = 0; k <= n_; ++k) {
-      path_rows[2 * k] = x[5 * k + 1] - x[z_index()];
-      path_rows[2 * k + 1] = -x[5 * k + 1] - x[z_index()];
-    }
+    min_max_rows().evaluate(x, g);
     return true;
   }
 
@@ -119,13 +115,7 @@ class EngagementNlp final : public MinimumOfVariableNlp {
       add(row + 4, b + 4);
       add(row + 4, u_index(k));
     }
-    const Index path_rows = state_count * n_;
-    for (int k = 0; k <= n_; ++k) {
-      add(path_rows + 2 * k, 5 * k + 1);
-      add(path_rows + 2 * k, z_index());
-      add(path_rows + 2 * k + 1, 5 * k + 1);
-      add(path_rows + 2 * k + 1, z_index());
-    }
+    min_max_rows().append_pattern(rows, columns, entry);
   }
 
   void jacobian_values(const Number* x, Number* values) const override {
@@ -144,10 +134,7 @@ class EngagementNlp final : public MinimumOfVariableNlp {
       for (const double value : chain) values[entry++] = value;
       a = b;
     }
-    for (int k = 0; k <= n_; ++k) {
-      const double path_values[4] = {1.0, -1.0, -1.0, -1.0};
-      for (const double value : path_values) values[entry++] = value;
-    }
+    min_max_rows().append_values(values, entry);
   }
 
   //! Hessian of the Lagrangian (the objective and all but the kinematic rows are linear): at
@@ -203,6 +190,7 @@ class EngagementNlp final : public MinimumOfVariableNlp {
   Index objective_index() const override { return z_index(); }
   Index u_index(int k) const { return state_count * (n_ + 1) + k; }
   Index z_index() const { return state_count * (n_ + 1) + n_; }
+  MinMaxRows min_max_rows() const { return {state_count * n_, n_ + 1, 5, 1, z_index()}; }
 
   FrenetRates rates(const Number* x, int k) const {
     const Number* node = x + 5 * k;

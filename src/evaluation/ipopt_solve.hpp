@@ -56,6 +56,45 @@ void append_pattern(const Ipopt::Index (&pairs)[N][2], Ipopt::Index* rows, Ipopt
   }
 }
 
+//! The rows e_k - z <= 0 and -e_k - z <= 0 of a min-max transcription, two per node k = 0..nodes-1
+//! from row `first_row`, with e_k at variable stride k + offset and z at `z_index`: their values
+//! into g, their sparsity and their (constant) Jacobian entries appended at `entry`.
+struct MinMaxRows {
+  Ipopt::Index first_row = 0;
+  int nodes = 0;
+  int stride = 1;
+  int offset = 0;
+  Ipopt::Index z_index = 0;
+
+  void evaluate(const Ipopt::Number* x, Ipopt::Number* g) const noexcept {
+    for (int k = 0; k < nodes; ++k) {
+      const Ipopt::Number e = x[stride * k + offset];
+      g[first_row + 2 * k] = e - x[z_index];
+      g[first_row + 2 * k + 1] = -e - x[z_index];
+    }
+  }
+  void append_pattern(Ipopt::Index* rows, Ipopt::Index* columns,
+                      Ipopt::Index& entry) const noexcept {
+    for (int k = 0; k < nodes; ++k) {
+      const Ipopt::Index e = stride * k + offset;
+      const Ipopt::Index pairs[4][2] = {{first_row + 2 * k, e},
+                                        {first_row + 2 * k, z_index},
+                                        {first_row + 2 * k + 1, e},
+                                        {first_row + 2 * k + 1, z_index}};
+      for (const auto& pair : pairs) {
+        rows[entry] = pair[0];
+        columns[entry] = pair[1];
+        ++entry;
+      }
+    }
+  }
+  void append_values(Ipopt::Number* values, Ipopt::Index& entry) const noexcept {
+    for (int k = 0; k < nodes; ++k) {
+      for (const double value : {1.0, -1.0, -1.0, -1.0}) values[entry++] = value;
+    }
+  }
+};
+
 //! Lambda_i(j) of a trapezoidal transcription: the sums of the multipliers of defect rows 0..2 of
 //! the one or two intervals (of `intervals`, `rows_per_interval` rows each) that touch node j.
 inline std::array<double, 3> node_multipliers(const Ipopt::Number* multipliers, int j,

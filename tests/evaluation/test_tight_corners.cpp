@@ -71,8 +71,16 @@ TEST(TightCorners, EveryControllerAtOrAboveTheReferenceWhereTheRateBinds) {
   const ResultsTable summary = result.summary();
   ASSERT_EQ(summary.rows.size(), 2u);
   for (const auto& row : summary.rows) ASSERT_EQ(row.size(), summary.header.size());
-  EXPECT_EQ(summary.rows[1][8], "");  // no ratio to a reference that does not exist
-  EXPECT_EQ(result.table().rows.size(), 2u * 3u);
+  EXPECT_EQ(summary.header[9], "to_reference");
+  EXPECT_EQ(summary.rows[1][9], "");  // no ratio to a reference that does not exist
+  EXPECT_EQ(result.table().rows.size(), 2u * 4u);
+  // The kinetic reference: positive here too, below every controller, none across the gears.
+  ASSERT_EQ(result.kinetic_references.size(), 2u);
+  EXPECT_FALSE(result.kinetic_references[0].diverged) << result.kinetic_references[0].note;
+  EXPECT_GT(result.kinetic_references[0].max_abs_e_m, 0.005);
+  EXPECT_LE(result.kinetic_references[0].max_abs_e_m, hairpin.certified.max_abs_e_m);
+  EXPECT_LE(result.kinetic_references[0].max_abs_e_m, hairpin.baselines[0].max_abs_e_m);
+  EXPECT_TRUE(std::isnan(result.kinetic_references[1].max_abs_e_m));
 }
 
 TEST(TightCorners, OptionsNameTheBrokenRule) {

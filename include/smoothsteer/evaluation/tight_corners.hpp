@@ -1,20 +1,20 @@
 #pragma once
 //! \file tight_corners.hpp
-//! Tight corners (docs/corners.md): the corners where the car's steering rate binds, each run
-//! from the path with the scenario's own controller and every limiter-held baseline (the
-//! engagement family's construction, engagement_study.hpp), against the optimal-control
-//! reference of the corner: the least max |e| any steering reaches under the car's angle, rate
-//! and acceleration limits (engagement_bound.hpp, started on the path), on the kinematic single
-//! track at the corner's speed. It leaves out the slip's lag behind the steering and the tires'
-//! saturation, which only make a corner harder: on the kinetic plants it is an estimate from
-//! below, not a strict bound. (The shipped cars steer neutrally in the tires' linear range: their
-//! axles share one tire curve scaled by the static load, so K_f = K_r and the kinematic steering
-//! is theirs in steady state.)
+//! Tight corners (docs/corners.md): the corners where the car's steering is asked the most, each
+//! run from the path with the scenario's own controller and every limiter-held baseline (the
+//! engagement family's construction, engagement_study.hpp), against two optimal-control
+//! references of the corner, the least max |e| any steering reaches under the car's angle, rate
+//! and acceleration limits at the corner's speed: on the kinematic single track
+//! (engagement_bound.hpp, started on the path) and on the linear kinetic single track, which adds
+//! the slip's lag behind the steering (kinetic_reference.hpp). Both leave out the tires'
+//! saturation and the actuator's lag, which only make a corner harder: on the plants they are
+//! estimates from below, not strict bounds.
 
 #include <string>
 #include <vector>
 
 #include "smoothsteer/evaluation/engagement_study.hpp"
+#include "smoothsteer/evaluation/kinetic_reference.hpp"
 #include "smoothsteer/evaluation/results_table.hpp"
 
 namespace smoothsteer {
@@ -41,6 +41,10 @@ struct TightCornerResult {
   TightCornerOptions options;            //!< with the default baselines filled in
   std::vector<EngagementCase> cases;     //!< one per corner, in options' order
   std::vector<double> bound_speeds_mps;  //!< the speed each reference holds (bound_speed_mps)
+  //! The kinetic reference of each corner (controller "kinetic_reference"; NaN across a change
+  //! of gear) and its re-simulation.
+  std::vector<EngagementRun> kinetic_references;
+  std::vector<KineticReferenceCheck> kinetic_checks;
   double wall_time_s = 0.0;
   //! Every corner and controller (docs/results/tight_corners.csv).
   ResultsTable table() const;
