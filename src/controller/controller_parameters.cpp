@@ -93,9 +93,10 @@ bool check_fields(const ControllerParameters& p, Fail& fail) {
     }
     if (field.group == ParameterGroup::governor && !p.governor.enabled) continue;
     if (field.name == "governor.enabled" && (chain.order < 1 || chain.order > 2)) {
-      return fail(name, chain.order,
-                  text("the governor needs order 1 or 2 (the command's acceleration, resp. "
-                       "rate, is affine in the lead curvature only there)"));
+      // Named as the order's rule, so that the message shows the order's value, not the flag's.
+      return fail(text("order"), chain.order,
+                  text("must be 1 or 2 with governor.enabled = true (the command's acceleration, "
+                       "resp. rate, is affine in the lead curvature only there)"));
     }
     if (field.rule.empty()) continue;
     const double value = field.get(p);

@@ -212,7 +212,7 @@ TEST(ParameterFields, InertAndConflictingCombinationsNameBothFields) {
   ControllerParameters third_order_governed = governed;
   third_order_governed.chain.order = 3;
   expect_message(third_order_governed,
-                 "governor.enabled = 3 the governor needs order 1 or 2 (the command's "
+                 "order = 3 must be 1 or 2 with governor.enabled = true (the command's "
                  "acceleration, resp. rate, is affine in the lead curvature only there)");
   ControllerParameters planned;
   planned.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
