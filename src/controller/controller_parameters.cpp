@@ -154,7 +154,7 @@ template <typename Fail>
 bool check_group_switches(const ControllerParameters& p, Fail& fail) {
   static constexpr ControllerParameters defaults{};
   for (const ParameterField& field : controller_parameter_fields()) {
-    if (field.group == ParameterGroup::none || field.group == ParameterGroup::governor) continue;
+    if (field.group == ParameterGroup::none) continue;
     const double value = field.get(p);
     if (!group_enabled(p, field.group)) {
       if (value != field.get(defaults)) {
@@ -220,6 +220,25 @@ bool check_group_combinations(const ControllerParameters& p, Fail& fail) {
   return true;
 }
 
+//! Settings of the laws that the rest of the parameters leave without effect: each names the
+//! field that makes it inert.
+template <typename Fail>
+bool check_inert_settings(const ControllerParameters& p, Fail& fail) {
+  static constexpr ControllerParameters defaults{};
+  if (p.law.surface == SlidingSurface::paper &&
+      p.law.approach_angle_rad != defaults.law.approach_angle_rad) {
+    return fail(text("approach_angle_rad"), p.law.approach_angle_rad,
+                text("has no effect with surface = paper (psi_max shapes the global law's "
+                     "reference heading only)"));
+  }
+  if (p.feedforward.catch_up > 0.0 && std::isinf(p.feedforward.curvature_rate)) {
+    return fail(text("feedforward_catch_up"), p.feedforward.catch_up,
+                text("has no effect with feedforward_curvature_rate = +inf (an unlimited "
+                     "feedforward leaves no gap to catch up)"));
+  }
+  return true;
+}
+
 //! Invariant sets down the chain (paper_notes §2): kbar_i lambda_i < 1 for every wheel.
 template <typename Fail>
 bool check_invariant_sets(const ControllerParameters& p, Fail& fail) {
@@ -250,7 +269,7 @@ template <typename Fail>
 bool check_rules(const ControllerParameters& p, Fail&& fail) {
   return check_fields(p, fail) && check_substep(p, fail) && check_planned_jumps(p, fail) &&
          check_group_switches(p, fail) && check_group_combinations(p, fail) &&
-         check_invariant_sets(p, fail);
+         check_inert_settings(p, fail) && check_invariant_sets(p, fail);
 }
 
 }  // namespace

@@ -231,6 +231,34 @@ TEST(ParameterFields, InertAndConflictingCombinationsNameBothFields) {
                  "plan's lags are simulated for those)");
 }
 
+// A setting another field leaves without effect is refused, naming that field; the same setting
+// where it acts passes.
+TEST(ParameterFields, InertSettingsNameTheFieldThatMakesThemInert) {
+  ControllerParameters ungoverned;
+  ungoverned.governor.margin = 0.05;
+  expect_message(ungoverned,
+                 "governor.margin = 0.05 has no effect while governor.enabled is false");
+  ControllerParameters governed = ungoverned;
+  governed.governor.enabled = true;
+  governed.governor.max_steering_rate_radps = 0.5;
+  governed.governor.max_steering_acceleration_radps2 = 2.0;
+  EXPECT_EQ(governed.validation_error(), "");
+
+  ControllerParameters paper_surface = with("approach_angle_rad", 1.0);
+  EXPECT_EQ(paper_surface.validation_error(), "");
+  paper_surface.law.surface = SlidingSurface::paper;
+  expect_message(paper_surface,
+                 "approach_angle_rad = 1 has no effect with surface = paper (psi_max shapes the "
+                 "global law's reference heading only)");
+
+  ControllerParameters unbounded = with("feedforward_catch_up", 0.5);
+  expect_message(unbounded,
+                 "feedforward_catch_up = 0.5 has no effect with feedforward_curvature_rate = +inf "
+                 "(an unlimited feedforward leaves no gap to catch up)");
+  unbounded.feedforward.curvature_rate = 0.01;
+  EXPECT_EQ(unbounded.validation_error(), "");
+}
+
 std::string between(const std::string& text, const std::string& begin, const std::string& end) {
   const auto start = text.find(begin);
   if (start == std::string::npos) return "";
