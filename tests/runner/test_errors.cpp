@@ -129,6 +129,21 @@ TEST_F(ScenarioErrors, OutOfRangeValues) {
             "");
 }
 
+// The steering-offset compensation acts on the observer's learned offset: where there is none,
+// the key is refused naming what makes it inert.
+TEST_F(ScenarioErrors, AnInertSteeringOffsetCompensationIsRefused) {
+  const std::string file = write("o.yaml", valid);
+  const std::string key = "simulation.side_slip.compensate_steering_offset";
+  expect_contains(error_of(file, {key + "=false"}),
+                  {file, "'" + key + "'", "no effect with side_slip.source = none"});
+  expect_contains(error_of(file, {key + "=true", "simulation.side_slip.source=truth"}),
+                  {"'" + key + "'", "side_slip.source = truth"});
+  expect_contains(error_of(file, {key + "=true", "simulation.side_slip.source=observer",
+                                  "simulation.side_slip.max_steering_offset_rad=0"}),
+                  {"'" + key + "'", "side_slip.max_steering_offset_rad = 0"});
+  EXPECT_EQ(error_of(file, {key + "=false", "simulation.side_slip.source=observer"}), "");
+}
+
 TEST_F(ScenarioErrors, BadOverridesAndWaypointFiles) {
   const std::string file = write("w.yaml", valid);
   expect_contains(error_of(file, {"no_equals_sign"}), {"no_equals_sign", "key.path=value"});
