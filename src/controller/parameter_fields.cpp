@@ -56,19 +56,19 @@ constexpr double to_double(T value) noexcept {
   }
 
 constexpr FieldRange closed(double min, double max) noexcept {
-  return {min, max, false, false};
+  return {{min, max, false, false}};
 }
 constexpr FieldRange right_open(double min, double max) noexcept {
-  return {min, max, false, true};
+  return {{min, max, false, true}};
 }
 constexpr FieldRange left_open(double min, double max) noexcept {
-  return {min, max, true, false};
+  return {{min, max, true, false}};
 }
 constexpr FieldRange positive() noexcept {
-  return {0.0, inf, true, true};
+  return {{0.0, inf, true, true}};
 }
 constexpr FieldRange any() noexcept {
-  return {-inf, inf, false, false};
+  return {{-inf, inf, false, false}};
 }
 
 using K = FieldKind;
@@ -152,7 +152,7 @@ const std::array fields{
     SMOOTHSTEER_SET(feedforward.curvature_preview)},
   // Delay compensation (Smith predictor).
   ParameterField{"actuator_delay_s", "delay_compensation.actuator_delay_s", K::real,
-    {0.0, P::max_actuator_delay_s, true, false, 0.0}, "s", "must be in [0, 1] s",
+    {{0.0, P::max_actuator_delay_s, true, false}, 0.0}, "s", "must be in [0, 1] s",
     "known steering delay that the Smith predictor compensates; 0 = off", "",
     G::delay_compensation, true, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(delay_compensation.actuator_delay_s),
@@ -181,7 +181,7 @@ const std::array fields{
     SMOOTHSTEER_GET(single_track.second_order), SMOOTHSTEER_SET(single_track.second_order)},
   // Disturbance estimation.
   ParameterField{"disturbance_estimation_length_m", "disturbance_estimation.length_m", K::real,
-    {1.0, 1000.0, false, false, 0.0}, "m", "must be 0 (off) or in [1, 1000] m",
+    {{1.0, 1000.0, false, false}, 0.0}, "m", "must be 0 (off) or in [1, 1000] m",
     "low-pass length of the estimated plant curvature (understeer, bank, steering offset) that "
     "the feedforward subtracts; 0 = off", "", G::disturbance_estimation, true,
     ScenarioKey::direct, "",
@@ -189,14 +189,14 @@ const std::array fields{
     SMOOTHSTEER_SWITCH(disturbance_estimation, disturbance_estimation.length_m, 0.0)},
   // Friction guard.
   ParameterField{"max_lateral_acceleration_mps2", "friction_guard.max_lateral_acceleration_mps2",
-    K::real, {0.0, inf, true, true, inf}, "m/s^2", "must be > 0 m/s^2 (+inf: no friction guard)",
+    K::real, {{0.0, inf, true, true}, inf}, "m/s^2", "must be > 0 m/s^2 (+inf: no friction guard)",
     "a_max: the lead curvature stays within a_max / v^2 at the rear axle; +inf = off", "",
     G::friction_guard, true, ScenarioKey::derived, "`friction_guard: true` (the vehicle's mu g)",
     SMOOTHSTEER_GET(friction_guard.max_lateral_acceleration_mps2),
     SMOOTHSTEER_SWITCH(friction_guard, friction_guard.max_lateral_acceleration_mps2, inf)},
   // Actuator inversion.
   ParameterField{"actuator_time_constant_s", "actuator_inversion.time_constant_s", K::real,
-    {0.0, 0.5, true, false, 0.0}, "s", "must be in [0, 0.5] s",
+    {{0.0, 0.5, true, false}, 0.0}, "s", "must be in [0, 0.5] s",
     "T of the steering-actuator inversion (1 + T s)^m; 0 = off", "", G::actuator_inversion, true,
     ScenarioKey::direct, "",
     SMOOTHSTEER_GET(actuator_inversion.time_constant_s),
@@ -271,16 +271,12 @@ std::string number_text(double value) {
 }  // namespace
 
 bool FieldRange::contains(double value) const noexcept {
-  if (std::isnan(value)) return false;
-  if (value == off) return true;
-  const bool above = min_open ? value > min : value >= min;
-  const bool below = max_open ? value < max : value <= max;
-  return above && below;
+  return value == off || ValueRange::contains(value);
 }
 
-FieldRange FieldRange::hull() const noexcept {
-  if (std::isnan(off)) return *this;
-  FieldRange h = *this;
+ValueRange FieldRange::hull() const noexcept {
+  ValueRange h = *this;
+  if (std::isnan(off)) return h;
   if (off <= min) {
     h.min = off;
     h.min_open = false;
@@ -289,7 +285,6 @@ FieldRange FieldRange::hull() const noexcept {
     h.max = off;
     h.max_open = false;
   }
-  h.off = std::numeric_limits<double>::quiet_NaN();
   return h;
 }
 

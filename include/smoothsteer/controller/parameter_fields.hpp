@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/value_range.hpp"
 
 namespace smoothsteer {
 
@@ -28,19 +29,13 @@ enum class ParameterGroup {
   governor,
 };
 
-//! Values a field accepts on its own: [min, max] with open ends as flagged, or `off`.
-//! A closed infinite end admits that infinity (feedforward_curvature_rate = +inf: no limit).
-//! NaN is never in range.
-struct FieldRange {
-  double min = -std::numeric_limits<double>::infinity();
-  double max = std::numeric_limits<double>::infinity();
-  bool min_open = false;
-  bool max_open = false;
+//! Values a field accepts on its own: the interval (value_range.hpp), or `off`.
+struct FieldRange : ValueRange {
   //! The flat value that switches an optional group off (0 or +inf); NaN: none.
   double off = std::numeric_limits<double>::quiet_NaN();
   bool contains(double value) const noexcept;
-  //! The smallest closed-or-open interval that holds the range and `off` (scenario keys).
-  FieldRange hull() const noexcept;
+  //! The smallest interval that holds the range and `off` (the scenario keys' range).
+  ValueRange hull() const noexcept;
 };
 
 //! How a scenario file sets the field (src/runner/controller_registry.cpp).
