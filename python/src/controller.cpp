@@ -124,7 +124,7 @@ py::list field_rows() {
     row["name"] = std::string(field.name);
     row["member"] = std::string(field.member);
     row["unit"] = std::string(field.unit);
-    row["rule"] = std::string(field.rule);
+    row["rule"] = field_rule_text(field);
     row["doc"] = std::string(field.doc);
     row["default"] = field_default_text(field);
     row["scenario_key"] = field.scenario == ScenarioKey::direct;

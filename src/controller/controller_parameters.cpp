@@ -66,8 +66,9 @@ bool check_wheelbases(const ControllerParameters& p, Fail& fail) {
                        "sign)"));
     }
     if (lambda < shortest || lambda > longest) {
+      // The vehicle's wheelbase states the same range.
       return fail(indexed, lambda,
-                  text("must be in [0.01, 100] m (min_wheelbase_m, max_wheelbase_m)"));
+                  [] { return field_rule_text(*find_parameter_field("vehicle_wheelbase_m")); });
     }
     // Paper Sec. III item 3: lambda^2 = lambda_veh^2 - lambda_l^2 implies lambda_l <
     // lambda_veh.
@@ -98,10 +99,10 @@ bool check_fields(const ControllerParameters& p, Fail& fail) {
                   text("must be 1 or 2 with governor.enabled = true (the command's acceleration, "
                        "resp. rate, is affine in the lead curvature only there)"));
     }
-    if (field.rule.empty()) continue;
+    if (!field_has_rule(field)) continue;
     const double value = field.get(p);
     if (!field.range.contains(value)) {
-      return fail(name, value, [&field] { return std::string(field.rule); });
+      return fail(name, value, [&field] { return field_rule_text(field); });
     }
   }
   return true;

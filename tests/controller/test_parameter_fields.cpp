@@ -57,7 +57,7 @@ TEST(ParameterFields, EveryFieldHasOneRowAndAUniqueName) {
       // them once it is enabled), and setting it back changes nothing.
       const ControllerParameters defaults;
       const double value = field.get(defaults);
-      if (!field.rule.empty() && field.group != ParameterGroup::governor) {
+      if (field_has_rule(field) && field.group != ParameterGroup::governor) {
         EXPECT_TRUE(field.range.contains(value)) << field.name;
       }
       ControllerParameters p;
@@ -72,7 +72,7 @@ TEST(ParameterFields, EveryFieldHasOneRowAndAUniqueName) {
 TEST(ParameterFields, EveryRuleHasItsOwnMessage) {
   int checked = 0;
   for (const ParameterField& field : controller_parameter_fields()) {
-    if (field.rule.empty() || field.kind == FieldKind::wheelbases) continue;
+    if (!field_has_rule(field) || field.kind == FieldKind::wheelbases) continue;
     ControllerParameters p;
     if (field.group == ParameterGroup::governor) {
       p.governor.enabled = true;
@@ -82,10 +82,26 @@ TEST(ParameterFields, EveryRuleHasItsOwnMessage) {
     const double value = out_of_range(field);
     field.set(p, value);
     expect_message(p, std::string(field.name) + " = " + exact_number(field.get(p)) + " " +
-                          std::string(field.rule));
+                          field_rule_text(field));
     ++checked;
   }
   EXPECT_GE(checked, 25);
+}
+
+// The rule texts come from the ranges: each shape of range reads as validate() states it.
+TEST(ParameterFields, RuleTextsAreDerivedFromTheRanges) {
+  auto rule = [](const char* name) { return field_rule_text(*find_parameter_field(name)); };
+  EXPECT_EQ(rule("k_rob"), "must be in [0, 1) (eq. sigma divides by 1 - k_rob)");
+  EXPECT_EQ(rule("lead_curvature_bound"), "must be finite and > 0 1/m");
+  EXPECT_EQ(rule("feedforward_curvature_rate"), "must be >= 0 1/m^2 (+inf: no rate limit)");
+  EXPECT_EQ(rule("actuator_delay_s"), "must be in [0, 1] s");  // off closes the open end
+  EXPECT_EQ(rule("disturbance_estimation_length_m"), "must be 0 (off) or in [1, 1000] m");
+  EXPECT_EQ(rule("max_lateral_acceleration_mps2"), "must be > 0 m/s^2 (+inf: no friction guard)");
+  EXPECT_EQ(rule("actuator_lag_count"), "must be 1, 2 or 3");
+  EXPECT_EQ(rule("surface"), "must be 0 (global) or 1 (paper)");
+  EXPECT_EQ(rule("approach_angle_rad"), "must be in (0, pi/2] rad");
+  EXPECT_EQ(rule("slip_preview_second_order"), "");
+  EXPECT_EQ(rule("governor.max_steering_angle_rad"), "");
 }
 
 TEST(ParameterFields, FlatFieldsSwitchTheirGroup) {
