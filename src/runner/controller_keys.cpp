@@ -88,6 +88,10 @@ void read_governor_keys(ConfigSection& c, ControllerParameters& p,
 
 }  // namespace
 
+Range key_range(std::string_view name) {
+  return key_range(*find_parameter_field(name));
+}
+
 SteeringSystemOptions lead_wheel_options() {
   SteeringSystemOptions options;
   options.controller = ControllerParameters{};

@@ -109,6 +109,9 @@ TEST_F(ScenarioErrors, OutOfRangeValues) {
   expect_contains(error_of(file, {"vehicle.mass_kg=0"}), {"'vehicle.mass_kg'", "out of range"});
   expect_contains(error_of(file, {"controller.feedforward_catch_up=2"}),
                   {file, "'controller.feedforward_catch_up'", "2", "[0, 1]"});
+  // wheelbases_m is read as a list, in the field table's range.
+  expect_contains(error_of(file, {"controller.wheelbases_m=[2.0, 0.005]"}),
+                  {"'controller.wheelbases_m'", "element 1 = 0.005", "[0.01, 100]"});
   expect_contains(error_of(file, {"controller.order=9"}), {"'controller.order'", "[0, 8]"});
   expect_contains(error_of(file, {"simulation.control_period_s=0.0125"}),
                   {"'simulation'", "control_period_s", "whole multiple"});
