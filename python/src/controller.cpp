@@ -8,6 +8,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -84,6 +85,38 @@ void field_from_python(const ParameterField& field, ControllerParameters& p,
   }
 }
 
+//! Binds every row of the field table whose member lies in `group` (prefix "law." for
+//! ControllerParameters::law) as a property of the group's class, named and documented as the
+//! table says: the table is the one list of a group's members. A group member set through its
+//! group sets that member alone; the flat attribute is the one that switches the group.
+template <typename Group>
+void bind_group_fields(py::class_<Group>& group_class, Group ControllerParameters::*group,
+                       std::string_view prefix) {
+  for (const ParameterField& field : controller_parameter_fields()) {
+    if (!field.member.starts_with(prefix) || field.kind == FieldKind::wheelbases) continue;
+    const ParameterField* f = &field;
+    const std::string attribute(field.member.substr(prefix.size()));
+    const bool is_switch = attribute == "enabled";
+    group_class.def_property(
+        attribute.c_str(),
+        [f, group](const Group& g) {
+          ControllerParameters p;
+          p.*group = g;
+          return field_to_python(*f, p);
+        },
+        [f, group, is_switch](Group& g, const py::object& value) {
+          ControllerParameters p;
+          p.*group = g;
+          field_from_python(*f, p, value);
+          if constexpr (requires { g.enabled; }) {
+            if (!is_switch) (p.*group).enabled = g.enabled;
+          }
+          g = p.*group;
+        },
+        field.doc.data());
+  }
+}
+
 py::list field_rows() {
   py::list rows;
   for (const ParameterField& field : controller_parameter_fields()) {
@@ -91,7 +124,7 @@ py::list field_rows() {
     row["name"] = std::string(field.name);
     row["member"] = std::string(field.member);
     row["unit"] = std::string(field.unit);
-    row["rule"] = std::string(field.rule);
+    row["rule"] = field_rule_text(field);
     row["doc"] = std::string(field.doc);
     row["default"] = field_default_text(field);
     row["scenario_key"] = field.scenario == ScenarioKey::direct;
@@ -158,28 +191,16 @@ void bind_controller(py::module_& m) {
       .value("lead_wheel", CorneringTarget::lead_wheel, "the lead wheel on the path (paper)");
 
   using G = SteeringGovernor;
-  py::class_<G>(m, "SteeringGovernor",
-                "The car's rate and acceleration limits held on the command inside the control "
-                "step (docs/governor.md); keyword arguments set any field.")
-      .def(py::init([](const py::kwargs& keywords) {
-        py::object governor = py::cast(G{});
-        set_attributes(governor, keywords);
-        return governor.cast<G>();
-      }))
-      .def_readwrite("enabled", &G::enabled)
-      .def_readwrite("max_steering_rate_radps", &G::max_steering_rate_radps, "R [rad/s]")
-      .def_readwrite("max_steering_acceleration_radps2", &G::max_steering_acceleration_radps2,
-                     "A [rad/s^2]")
-      .def_readwrite("max_longitudinal_acceleration_mps2", &G::max_longitudinal_acceleration_mps2,
-                     "|dv/dt| budgeted beyond the measured one [m/s^2]")
-      .def_readwrite("law_length_m", &G::law_length_m, "l [m]; 0 = derived")
-      .def_readwrite("margin", &G::margin, "share of R and A kept in reserve")
-      .def_readwrite("max_steering_angle_rad", &G::max_steering_angle_rad,
-                     "angle limit the authority is derived from [rad]")
-      .def_readwrite("max_lateral_acceleration_mps2", &G::max_lateral_acceleration_mps2,
-                     "friction limit mu g the authority is derived from [m/s^2]")
-      .def_readwrite("certified_switching_bound", &G::certified_switching_bound,
-                     "the near-path law's authority [1/m]; 0 = kbar_sw");
+  py::class_<G> governor_class(
+      m, "SteeringGovernor",
+      "The car's rate and acceleration limits held on the command inside the control "
+      "step (docs/governor.md); keyword arguments set any field.");
+  governor_class.def(py::init([](const py::kwargs& keywords) {
+    py::object governor = py::cast(G{});
+    set_attributes(governor, keywords);
+    return governor.cast<G>();
+  }));
+  bind_group_fields(governor_class, &ControllerParameters::governor, "governor.");
 
   // The rate-limited curvature preview (feedforward.hpp, docs/feedforward.md section 2).
   m.def(
@@ -224,57 +245,48 @@ void bind_controller(py::module_& m) {
         "Eq. (governed_authority): the parameters the governor widens a schedule entry to.");
   m.attr("governed_reversal_heading_rad") = governed_reversal_heading_rad;
 
-  // The groups, each a class of its own: p.chain.order, p.single_track.preview_time_s, ...
-  py::class_<ChainParameters>(m, "ChainParameters", "The fictive trailer chain (ChainParameters).")
-      .def(py::init(&from_keywords<ChainParameters>))
-      .def_readwrite("order", &ChainParameters::order)
-      .def_readwrite("vehicle_wheelbase_m", &ChainParameters::vehicle_wheelbase_m)
-      .def_property("wheelbases_m", &chain_wheelbases, &set_chain_wheelbases,
-                    "lambda_1..lambda_n [m]")
-      .def_readwrite("lead_curvature_bound", &ChainParameters::lead_curvature_bound)
-      .def_readwrite("max_substep_fraction", &ChainParameters::max_substep_fraction)
-      .def_readwrite("max_substeps", &ChainParameters::max_substeps);
-  py::class_<SwitchingLawParameters>(m, "SwitchingLawParameters", "The switching law.")
-      .def(py::init(&from_keywords<SwitchingLawParameters>))
-      .def_readwrite("surface", &SwitchingLawParameters::surface)
-      .def_readwrite("k_rob", &SwitchingLawParameters::k_rob)
-      .def_readwrite("approach_angle_rad", &SwitchingLawParameters::approach_angle_rad)
-      .def_readwrite("boundary_layer", &SwitchingLawParameters::boundary_layer);
-  py::class_<FeedforwardParameters>(m, "FeedforwardParameters", "The curvature feedforward.")
-      .def(py::init(&from_keywords<FeedforwardParameters>))
-      .def_readwrite("share", &FeedforwardParameters::share)
-      .def_readwrite("curvature_rate", &FeedforwardParameters::curvature_rate)
-      .def_readwrite("catch_up", &FeedforwardParameters::catch_up)
-      .def_readwrite("cornering_target", &FeedforwardParameters::cornering_target)
-      .def_readwrite("curvature_preview", &FeedforwardParameters::curvature_preview);
-  py::class_<DelayCompensation>(m, "DelayCompensation", "The Smith predictor (optional).")
-      .def(py::init(&from_keywords<DelayCompensation>))
-      .def_readwrite("enabled", &DelayCompensation::enabled)
-      .def_readwrite("actuator_delay_s", &DelayCompensation::actuator_delay_s);
-  py::class_<SingleTrackInversion>(m, "SingleTrackInversion",
-                                   "The single-track inversion of the feedforward (optional).")
-      .def(py::init(&from_keywords<SingleTrackInversion>))
-      .def_readwrite("enabled", &SingleTrackInversion::enabled)
-      .def_readwrite("rear_slip_gradient_s2pm", &SingleTrackInversion::rear_slip_gradient_s2pm)
-      .def_readwrite("front_slip_gradient_s2pm", &SingleTrackInversion::front_slip_gradient_s2pm)
-      .def_readwrite("preview_time_s", &SingleTrackInversion::preview_time_s)
-      .def_readwrite("second_order", &SingleTrackInversion::second_order);
-  py::class_<DisturbanceEstimation>(m, "DisturbanceEstimation",
-                                    "The plant-curvature estimate (optional).")
-      .def(py::init(&from_keywords<DisturbanceEstimation>))
-      .def_readwrite("enabled", &DisturbanceEstimation::enabled)
-      .def_readwrite("length_m", &DisturbanceEstimation::length_m);
-  py::class_<FrictionGuard>(m, "FrictionGuard", "The friction guard (optional).")
-      .def(py::init(&from_keywords<FrictionGuard>))
-      .def_readwrite("enabled", &FrictionGuard::enabled)
-      .def_readwrite("max_lateral_acceleration_mps2",
-                     &FrictionGuard::max_lateral_acceleration_mps2);
-  py::class_<ActuatorInversion>(m, "ActuatorInversion",
-                                "The steering-actuator inversion (optional).")
-      .def(py::init(&from_keywords<ActuatorInversion>))
-      .def_readwrite("enabled", &ActuatorInversion::enabled)
-      .def_readwrite("time_constant_s", &ActuatorInversion::time_constant_s)
-      .def_readwrite("lag_count", &ActuatorInversion::lag_count);
+  // The groups, each a class of its own, their members bound from the field table.
+  py::class_<ChainParameters> chain_class(m, "ChainParameters",
+                                          "The fictive trailer chain (ChainParameters).");
+  chain_class.def(py::init(&from_keywords<ChainParameters>));
+  chain_class.def_property("wheelbases_m", &chain_wheelbases, &set_chain_wheelbases,
+                           find_parameter_field("wheelbases_m")->doc.data());
+  bind_group_fields(chain_class, &ControllerParameters::chain, "chain.");
+  py::class_<SwitchingLawParameters> law_class(m, "SwitchingLawParameters", "The switching law.");
+  law_class.def(py::init(&from_keywords<SwitchingLawParameters>));
+  bind_group_fields(law_class, &ControllerParameters::law, "law.");
+  py::class_<FeedforwardParameters> feedforward_class(m, "FeedforwardParameters",
+                                                      "The curvature feedforward.");
+  feedforward_class.def(py::init(&from_keywords<FeedforwardParameters>));
+  bind_group_fields(feedforward_class, &ControllerParameters::feedforward, "feedforward.");
+  py::class_<DelayCompensation> delay_compensation_class(m, "DelayCompensation",
+                                                         "The Smith predictor (optional).");
+  delay_compensation_class.def(py::init(&from_keywords<DelayCompensation>));
+  delay_compensation_class.def_readwrite("enabled", &DelayCompensation::enabled);
+  bind_group_fields(delay_compensation_class, &ControllerParameters::delay_compensation,
+                    "delay_compensation.");
+  py::class_<SingleTrackInversion> single_track_class(
+      m, "SingleTrackInversion", "The single-track inversion of the feedforward (optional).");
+  single_track_class.def(py::init(&from_keywords<SingleTrackInversion>));
+  single_track_class.def_readwrite("enabled", &SingleTrackInversion::enabled);
+  bind_group_fields(single_track_class, &ControllerParameters::single_track, "single_track.");
+  py::class_<DisturbanceEstimation> disturbance_estimation_class(
+      m, "DisturbanceEstimation", "The plant-curvature estimate (optional).");
+  disturbance_estimation_class.def(py::init(&from_keywords<DisturbanceEstimation>));
+  disturbance_estimation_class.def_readwrite("enabled", &DisturbanceEstimation::enabled);
+  bind_group_fields(disturbance_estimation_class, &ControllerParameters::disturbance_estimation,
+                    "disturbance_estimation.");
+  py::class_<FrictionGuard> friction_guard_class(m, "FrictionGuard",
+                                                 "The friction guard (optional).");
+  friction_guard_class.def(py::init(&from_keywords<FrictionGuard>));
+  friction_guard_class.def_readwrite("enabled", &FrictionGuard::enabled);
+  bind_group_fields(friction_guard_class, &ControllerParameters::friction_guard, "friction_guard.");
+  py::class_<ActuatorInversion> actuator_inversion_class(
+      m, "ActuatorInversion", "The steering-actuator inversion (optional).");
+  actuator_inversion_class.def(py::init(&from_keywords<ActuatorInversion>));
+  actuator_inversion_class.def_readwrite("enabled", &ActuatorInversion::enabled);
+  bind_group_fields(actuator_inversion_class, &ControllerParameters::actuator_inversion,
+                    "actuator_inversion.");
 
   using P = ControllerParameters;
   py::class_<P> parameters_class(

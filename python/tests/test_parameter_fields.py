@@ -46,3 +46,57 @@ def test_an_inert_field_is_rejected_naming_its_switch():
     with pytest.raises(ValueError, match="actuator_lag_count = 2 has no effect while "
                                          "actuator_inversion.enabled is false"):
         ss.ControllerParameters(actuator_lag_count=2).validate()
+
+
+# Each group of ControllerParameters and its class; the optional groups' `enabled` switch is the
+# one member not in the table (the flat fields switch it), except the governor's.
+GROUP_CLASSES = {"chain": "ChainParameters", "law": "SwitchingLawParameters",
+                 "feedforward": "FeedforwardParameters", "delay_compensation": "DelayCompensation",
+                 "single_track": "SingleTrackInversion",
+                 "disturbance_estimation": "DisturbanceEstimation",
+                 "friction_guard": "FrictionGuard", "actuator_inversion": "ActuatorInversion",
+                 "governor": "SteeringGovernor"}
+UNGATED = {"chain", "law", "feedforward", "governor"}
+
+
+def data_attributes(cls):
+    """The instance attributes (the static constants, max_order and the like, are not fields)."""
+    return {name for name, value in vars(cls).items()
+            if type(value) is property and not name.startswith("_")}
+
+
+def test_each_group_class_has_exactly_the_tables_members():
+    table = {}
+    for row in ss.ControllerParameters.fields():
+        group, member = row["member"].split(".", 1)
+        table.setdefault(group, set()).add(member)
+    assert set(table) == set(GROUP_CLASSES)
+    for group, class_name in GROUP_CLASSES.items():
+        expected = table[group] | (set() if group in UNGATED else {"enabled"})
+        assert data_attributes(getattr(ss, class_name)) == expected, class_name
+    flat = data_attributes(ss.ControllerParameters) - set(GROUP_CLASSES)
+    rows = {row["name"] for row in ss.ControllerParameters.fields()
+            if not row["name"].startswith("governor.")}
+    assert flat == rows
+
+
+def test_a_group_attribute_and_its_flat_name_reach_the_same_member():
+    rows = [row for row in ss.ControllerParameters.fields() if row["name"] != "wheelbases_m"]
+    for row in rows:
+        group, member = row["member"].split(".", 1)
+        p = ss.ControllerParameters()
+        value = getattr(getattr(p, group), member)
+        if isinstance(value, bool):
+            changed = not value
+        elif isinstance(value, int) and not hasattr(value, "name"):
+            changed = value + 1
+        elif isinstance(value, float):
+            changed = 0.5 if value != 0.5 else 0.25
+        else:
+            continue  # an enumeration: its values are checked by the scenario tests
+        holder = getattr(p, group)
+        setattr(holder, member, changed)
+        setattr(p, group, holder)
+        assert getattr(getattr(p, group), member) == changed, row["name"]
+        if not row["name"].startswith("governor."):
+            assert getattr(p, row["name"]) == changed, row["name"]

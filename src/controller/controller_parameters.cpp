@@ -66,8 +66,9 @@ bool check_wheelbases(const ControllerParameters& p, Fail& fail) {
                        "sign)"));
     }
     if (lambda < shortest || lambda > longest) {
+      // The vehicle's wheelbase states the same range.
       return fail(indexed, lambda,
-                  text("must be in [0.01, 100] m (min_wheelbase_m, max_wheelbase_m)"));
+                  [] { return field_rule_text(*find_parameter_field("vehicle_wheelbase_m")); });
     }
     // Paper Sec. III item 3: lambda^2 = lambda_veh^2 - lambda_l^2 implies lambda_l <
     // lambda_veh.
@@ -93,14 +94,15 @@ bool check_fields(const ControllerParameters& p, Fail& fail) {
     }
     if (field.group == ParameterGroup::governor && !p.governor.enabled) continue;
     if (field.name == "governor.enabled" && (chain.order < 1 || chain.order > 2)) {
-      return fail(name, chain.order,
-                  text("the governor needs order 1 or 2 (the command's acceleration, resp. "
-                       "rate, is affine in the lead curvature only there)"));
+      // Named as the order's rule, so that the message shows the order's value, not the flag's.
+      return fail(text("order"), chain.order,
+                  text("must be 1 or 2 with governor.enabled = true (the command's acceleration, "
+                       "resp. rate, is affine in the lead curvature only there)"));
     }
-    if (field.rule.empty()) continue;
+    if (!field_has_rule(field)) continue;
     const double value = field.get(p);
     if (!field.range.contains(value)) {
-      return fail(name, value, [&field] { return std::string(field.rule); });
+      return fail(name, value, [&field] { return field_rule_text(field); });
     }
   }
   return true;
@@ -153,7 +155,7 @@ template <typename Fail>
 bool check_group_switches(const ControllerParameters& p, Fail& fail) {
   static constexpr ControllerParameters defaults{};
   for (const ParameterField& field : controller_parameter_fields()) {
-    if (field.group == ParameterGroup::none || field.group == ParameterGroup::governor) continue;
+    if (field.group == ParameterGroup::none) continue;
     const double value = field.get(p);
     if (!group_enabled(p, field.group)) {
       if (value != field.get(defaults)) {
@@ -219,6 +221,25 @@ bool check_group_combinations(const ControllerParameters& p, Fail& fail) {
   return true;
 }
 
+//! Settings of the laws that the rest of the parameters leave without effect: each names the
+//! field that makes it inert.
+template <typename Fail>
+bool check_inert_settings(const ControllerParameters& p, Fail& fail) {
+  static constexpr ControllerParameters defaults{};
+  if (p.law.surface == SlidingSurface::paper &&
+      p.law.approach_angle_rad != defaults.law.approach_angle_rad) {
+    return fail(text("approach_angle_rad"), p.law.approach_angle_rad,
+                text("has no effect with surface = paper (psi_max shapes the global law's "
+                     "reference heading only)"));
+  }
+  if (p.feedforward.catch_up > 0.0 && std::isinf(p.feedforward.curvature_rate)) {
+    return fail(text("feedforward_catch_up"), p.feedforward.catch_up,
+                text("has no effect with feedforward_curvature_rate = +inf (an unlimited "
+                     "feedforward leaves no gap to catch up)"));
+  }
+  return true;
+}
+
 //! Invariant sets down the chain (paper_notes §2): kbar_i lambda_i < 1 for every wheel.
 template <typename Fail>
 bool check_invariant_sets(const ControllerParameters& p, Fail& fail) {
@@ -249,7 +270,7 @@ template <typename Fail>
 bool check_rules(const ControllerParameters& p, Fail&& fail) {
   return check_fields(p, fail) && check_substep(p, fail) && check_planned_jumps(p, fail) &&
          check_group_switches(p, fail) && check_group_combinations(p, fail) &&
-         check_invariant_sets(p, fail);
+         check_inert_settings(p, fail) && check_invariant_sets(p, fail);
 }
 
 }  // namespace

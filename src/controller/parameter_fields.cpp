@@ -56,19 +56,19 @@ constexpr double to_double(T value) noexcept {
   }
 
 constexpr FieldRange closed(double min, double max) noexcept {
-  return {min, max, false, false};
+  return {{min, max, false, false}};
 }
 constexpr FieldRange right_open(double min, double max) noexcept {
-  return {min, max, false, true};
+  return {{min, max, false, true}};
 }
 constexpr FieldRange left_open(double min, double max) noexcept {
-  return {min, max, true, false};
+  return {{min, max, true, false}};
 }
 constexpr FieldRange positive() noexcept {
-  return {0.0, inf, true, true};
+  return {{0.0, inf, true, true}};
 }
 constexpr FieldRange any() noexcept {
-  return {-inf, inf, false, false};
+  return {{-inf, inf, false, false}};
 }
 
 using K = FieldKind;
@@ -78,100 +78,100 @@ using G = ParameterGroup;
 const std::array fields{
   // The chain (paper Sec. II-C/D).
   ParameterField{"order", "chain.order", K::integer, closed(0, P::max_order), "",
-    "must be in [0, 8]", "n, the number of fictive wheels; the command is C^(n-1)", "",
+    "", "n, the number of fictive wheels; the command is C^(n-1)", "",
     G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(chain.order), SMOOTHSTEER_SET(chain.order)},
   ParameterField{"vehicle_wheelbase_m", "chain.vehicle_wheelbase_m", K::real,
     closed(P::min_wheelbase_m, P::max_wheelbase_m), "m",
-    "must be finite and > 0, in [0.01, 100] m (min_wheelbase_m, max_wheelbase_m)",
+    " (min_wheelbase_m, max_wheelbase_m)",
     "lambda_veh, the real vehicle's wheelbase", "", G::none, false, ScenarioKey::derived,
     "the vehicle file's lf + lr",
     SMOOTHSTEER_GET(chain.vehicle_wheelbase_m), SMOOTHSTEER_SET(chain.vehicle_wheelbase_m)},
   ParameterField{"wheelbases_m", "chain.wheelbases_m", K::wheelbases,
     closed(P::min_wheelbase_m, P::max_wheelbase_m), "m",
-    "must be in [0.01, 100] m; lambda_i < lambda_veh for i >= 2 (eq. cornering_constr)",
+    "; lambda_i < lambda_veh for i >= 2 (eq. cornering_constr)",
     "lambda_1 (fictive lambda) .. lambda_n (lead lambda_l); the first n are used", "",
     G::none, false, ScenarioKey::direct, "", nullptr, nullptr},
   ParameterField{"lead_curvature_bound", "chain.lead_curvature_bound", K::real, positive(), "1/m",
-    "must be finite and > 0", "kbar_n (eq. kappan); kbar_i lambda_i < 1 down the chain "
+    "", "kbar_n (eq. kappan); kbar_i lambda_i < 1 down the chain "
     "(eq. kappal_constr)", "", G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(chain.lead_curvature_bound), SMOOTHSTEER_SET(chain.lead_curvature_bound)},
   ParameterField{"max_substep_fraction", "chain.max_substep_fraction", K::real, left_open(0, 1), "",
-    "must be in (0, 1]", "chain RK4 sub-step over the shortest wheelbase; times min lambda_i "
+    "", "chain RK4 sub-step over the shortest wheelbase; times min lambda_i "
     ">= min_substep_m = 1 mm", "", G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(chain.max_substep_fraction), SMOOTHSTEER_SET(chain.max_substep_fraction)},
   ParameterField{"max_substeps", "chain.max_substeps", K::integer, closed(1, 10000), "",
-    "must be in [1, 10000]", "most sub-steps per control period", "", G::none, false,
+    "", "most sub-steps per control period", "", G::none, false,
     ScenarioKey::direct, "",
     SMOOTHSTEER_GET(chain.max_substeps), SMOOTHSTEER_SET(chain.max_substeps)},
   // The switching law.
   ParameterField{"surface", "law.surface", K::choice, closed(0, 1), "",
-    "must be 0 (global) or 1 (paper)", "`global` (converges from any pose) or `paper` (printed "
+    "", "`global` (converges from any pose) or `paper` (printed "
     "eq. sigma, local)", "global paper", G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(law.surface), SMOOTHSTEER_SET(law.surface)},
   ParameterField{"k_rob", "law.k_rob", K::real, right_open(0, 1), "",
-    "must be in [0, 1) (eq. sigma divides by 1 - k_rob)",
+    " (eq. sigma divides by 1 - k_rob)",
     "robustness margin: the law rejects matched disturbances |kappa_d| <= k_rob kbar_sw "
     "(eq. sigma; paper_notes §5: the paper's k_rob = 3 is 0.3)", "", G::none, false,
     ScenarioKey::direct, "", SMOOTHSTEER_GET(law.k_rob), SMOOTHSTEER_SET(law.k_rob)},
   ParameterField{"approach_angle_rad", "law.approach_angle_rad", K::real,
-    left_open(0, std::numbers::pi / 2.0), "rad", "must be in (0, pi/2]",
+    left_open(0, std::numbers::pi / 2.0), "rad", "",
     "psi_max of the global law", "", G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(law.approach_angle_rad), SMOOTHSTEER_SET(law.approach_angle_rad)},
   ParameterField{"boundary_layer", "law.boundary_layer", K::real, right_open(0, inf), "",
-    "must be finite and >= 0", "epsilon: kbar sat(z/epsilon) instead of kbar sign(z) "
+    "", "epsilon: kbar sat(z/epsilon) instead of kbar sign(z) "
     "(rad for the global law, m for the paper's); 0 = the paper's law", "", G::none, false,
     ScenarioKey::direct, "",
     SMOOTHSTEER_GET(law.boundary_layer), SMOOTHSTEER_SET(law.boundary_layer)},
   // The feedforward.
   ParameterField{"feedforward_share", "feedforward.share", K::real, right_open(0, 1), "",
-    "must be in [0, 1) (the switching part needs kbar_n - kbar_ff > 0)",
+    " (the switching part needs kbar_n - kbar_ff > 0)",
     "kbar_ff / kbar_n, the feedforward's share of the authority (feedforward.md)", "", G::none,
     false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(feedforward.share), SMOOTHSTEER_SET(feedforward.share)},
   ParameterField{"feedforward_curvature_rate", "feedforward.curvature_rate", K::real,
-    closed(0, inf), "1/m^2", "must be >= 0 (+inf: no rate limit)",
+    closed(0, inf), "1/m^2", " (+inf: no rate limit)",
     "L_ff, the largest d kappa_ff / ds; finite values make the rate certificate finite", "",
     G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(feedforward.curvature_rate), SMOOTHSTEER_SET(feedforward.curvature_rate)},
   ParameterField{"feedforward_catch_up", "feedforward.catch_up", K::real, closed(0, 1), "",
-    "must be in [0, 1]", "g: share of kbar_sw that closes the gap the rate limit leaves "
+    "", "g: share of kbar_sw that closes the gap the rate limit leaves "
     "(feedforward.md section 4); 0 = off", "", G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(feedforward.catch_up), SMOOTHSTEER_SET(feedforward.catch_up)},
   ParameterField{"cornering_target", "feedforward.cornering_target", K::choice, closed(0, 2), "",
-    "must be 0 (rear_axle), 1 (rear_axle_exact) or 2 (lead_wheel)",
+    "",
     "`rear_axle` (stationary offset), `rear_axle_exact` (the chain's inverse, feedforward.md "
     "section 3) or `lead_wheel` (paper)", "rear_axle rear_axle_exact lead_wheel", G::none, false,
     ScenarioKey::direct, "",
     SMOOTHSTEER_GET(feedforward.cornering_target), SMOOTHSTEER_SET(feedforward.cornering_target)},
   ParameterField{"curvature_preview", "feedforward.curvature_preview", K::choice, closed(0, 1), "",
-    "must be 0 (centred_ramp) or 1 (planned_jumps)", "`centred_ramp` or `planned_jumps` "
+    "", "`centred_ramp` or `planned_jumps` "
     "(feedforward.md section 2b; needs `rear_axle_exact`, order 1 or 2, a finite L_ff > 0)",
     "centred_ramp planned_jumps", G::none, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(feedforward.curvature_preview),
     SMOOTHSTEER_SET(feedforward.curvature_preview)},
   // Delay compensation (Smith predictor).
   ParameterField{"actuator_delay_s", "delay_compensation.actuator_delay_s", K::real,
-    {0.0, P::max_actuator_delay_s, true, false, 0.0}, "s", "must be in [0, 1] s",
+    {{0.0, P::max_actuator_delay_s, true, false}, 0.0}, "s", "",
     "known steering delay that the Smith predictor compensates; 0 = off", "",
     G::delay_compensation, true, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(delay_compensation.actuator_delay_s),
     SMOOTHSTEER_SWITCH(delay_compensation, delay_compensation.actuator_delay_s, 0.0)},
   // Single-track inversion.
   ParameterField{"rear_slip_gradient_s2pm", "single_track.rear_slip_gradient_s2pm", K::real,
-    closed(0, P::max_slip_gradient_s2pm), "s^2/m", "must be in [0, 0.1] s^2/m",
+    closed(0, P::max_slip_gradient_s2pm), "s^2/m", "",
     "K_r of the single-track inversion; with the front one 0 = off", "", G::single_track, true,
     ScenarioKey::derived, "`slip_preview: true` (the vehicle file's tires)",
     SMOOTHSTEER_GET(single_track.rear_slip_gradient_s2pm),
     SMOOTHSTEER_SLIP(single_track.rear_slip_gradient_s2pm)},
   ParameterField{"front_slip_gradient_s2pm", "single_track.front_slip_gradient_s2pm", K::real,
-    closed(0, P::max_slip_gradient_s2pm), "s^2/m", "must be in [0, 0.1] s^2/m",
+    closed(0, P::max_slip_gradient_s2pm), "s^2/m", "",
     "K_f of the single-track inversion", "", G::single_track, true, ScenarioKey::derived,
     "`slip_preview: true` (the vehicle file's tires)",
     SMOOTHSTEER_GET(single_track.front_slip_gradient_s2pm),
     SMOOTHSTEER_SLIP(single_track.front_slip_gradient_s2pm)},
   ParameterField{"preview_time_s", "single_track.preview_time_s", K::real,
-    closed(0, P::max_actuator_delay_s), "s", "must be in [0, 1] s",
+    closed(0, P::max_actuator_delay_s), "s", "",
     "extra preview of the inversion (vehicle_dynamics.md section 3)", "", G::single_track, false,
     ScenarioKey::direct, "",
     SMOOTHSTEER_GET(single_track.preview_time_s), SMOOTHSTEER_SET(single_track.preview_time_s)},
@@ -181,7 +181,7 @@ const std::array fields{
     SMOOTHSTEER_GET(single_track.second_order), SMOOTHSTEER_SET(single_track.second_order)},
   // Disturbance estimation.
   ParameterField{"disturbance_estimation_length_m", "disturbance_estimation.length_m", K::real,
-    {1.0, 1000.0, false, false, 0.0}, "m", "must be 0 (off) or in [1, 1000] m",
+    {{1.0, 1000.0, false, false}, 0.0}, "m", "",
     "low-pass length of the estimated plant curvature (understeer, bank, steering offset) that "
     "the feedforward subtracts; 0 = off", "", G::disturbance_estimation, true,
     ScenarioKey::direct, "",
@@ -189,20 +189,20 @@ const std::array fields{
     SMOOTHSTEER_SWITCH(disturbance_estimation, disturbance_estimation.length_m, 0.0)},
   // Friction guard.
   ParameterField{"max_lateral_acceleration_mps2", "friction_guard.max_lateral_acceleration_mps2",
-    K::real, {0.0, inf, true, true, inf}, "m/s^2", "must be > 0 m/s^2 (+inf: no friction guard)",
+    K::real, {{0.0, inf, true, true}, inf}, "m/s^2", " (+inf: no friction guard)",
     "a_max: the lead curvature stays within a_max / v^2 at the rear axle; +inf = off", "",
     G::friction_guard, true, ScenarioKey::derived, "`friction_guard: true` (the vehicle's mu g)",
     SMOOTHSTEER_GET(friction_guard.max_lateral_acceleration_mps2),
     SMOOTHSTEER_SWITCH(friction_guard, friction_guard.max_lateral_acceleration_mps2, inf)},
   // Actuator inversion.
   ParameterField{"actuator_time_constant_s", "actuator_inversion.time_constant_s", K::real,
-    {0.0, 0.5, true, false, 0.0}, "s", "must be in [0, 0.5] s",
+    {{0.0, 0.5, true, false}, 0.0}, "s", "",
     "T of the steering-actuator inversion (1 + T s)^m; 0 = off", "", G::actuator_inversion, true,
     ScenarioKey::direct, "",
     SMOOTHSTEER_GET(actuator_inversion.time_constant_s),
     SMOOTHSTEER_SWITCH(actuator_inversion, actuator_inversion.time_constant_s, 0.0)},
   ParameterField{"actuator_lag_count", "actuator_inversion.lag_count", K::integer, closed(1, 3), "",
-    "must be 1, 2 or 3", "m, the number of equal lags inverted", "", G::actuator_inversion,
+    "", "m, the number of equal lags inverted", "", G::actuator_inversion,
     false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(actuator_inversion.lag_count), SMOOTHSTEER_SET(actuator_inversion.lag_count)},
   // The steering governor (docs/governor.md); its fields are checked while it is enabled.
@@ -211,30 +211,30 @@ const std::array fields{
     "(needs order 1 or 2)", "", G::governor, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.enabled), SMOOTHSTEER_SET(governor.enabled)},
   ParameterField{"governor.max_steering_rate_radps", "governor.max_steering_rate_radps", K::real,
-    positive(), "rad/s", "must be finite and > 0", "R, the steering rate the governor holds", "",
+    positive(), "rad/s", "", "R, the steering rate the governor holds", "",
     G::governor, false, ScenarioKey::derived, "the vehicle file's max_steering_rate_radps",
     SMOOTHSTEER_GET(governor.max_steering_rate_radps),
     SMOOTHSTEER_SET(governor.max_steering_rate_radps)},
   ParameterField{"governor.max_steering_acceleration_radps2",
     "governor.max_steering_acceleration_radps2", K::real, positive(), "rad/s^2",
-    "must be finite and > 0", "A, the steering acceleration the governor holds", "", G::governor,
+    "", "A, the steering acceleration the governor holds", "", G::governor,
     false, ScenarioKey::derived, "the vehicle file's max_steering_acceleration_radps2",
     SMOOTHSTEER_GET(governor.max_steering_acceleration_radps2),
     SMOOTHSTEER_SET(governor.max_steering_acceleration_radps2)},
   ParameterField{"governor.max_longitudinal_acceleration_mps2",
     "governor.max_longitudinal_acceleration_mps2", K::real, closed(0, 50), "m/s^2",
-    "must be in [0, 50] m/s^2", "|dv/dt| budgeted beyond the measured one", "", G::governor,
+    "", "|dv/dt| budgeted beyond the measured one", "", G::governor,
     false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.max_longitudinal_acceleration_mps2),
     SMOOTHSTEER_SET(governor.max_longitudinal_acceleration_mps2)},
   ParameterField{"governor.law_length_m", "governor.law_length_m", K::real, closed(0, 1000), "m",
-    "must be 0 (derived) or in (0, 1000] m", "l: the far law's boundary layer epsilon = "
+    " (0: derived)", "l: the far law's boundary layer epsilon = "
     "l kbar_sw / 2, a critically damped linear zone; 0 = derived from the speed and the heading "
     "error (eq. governed_law_length)", "", G::governor,
     false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.law_length_m), SMOOTHSTEER_SET(governor.law_length_m)},
   ParameterField{"governor.margin", "governor.margin", K::real, right_open(0, 0.5), "",
-    "must be in [0, 0.5)", "share of R and A kept for the chain's variation within a sub-step",
+    "", "share of R and A kept for the chain's variation within a sub-step",
     "", G::governor, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.margin), SMOOTHSTEER_SET(governor.margin)},
   ParameterField{"governor.max_steering_angle_rad", "governor.max_steering_angle_rad", K::real,
@@ -271,16 +271,12 @@ std::string number_text(double value) {
 }  // namespace
 
 bool FieldRange::contains(double value) const noexcept {
-  if (std::isnan(value)) return false;
-  if (value == off) return true;
-  const bool above = min_open ? value > min : value >= min;
-  const bool below = max_open ? value < max : value <= max;
-  return above && below;
+  return value == off || ValueRange::contains(value);
 }
 
-FieldRange FieldRange::hull() const noexcept {
-  if (std::isnan(off)) return *this;
-  FieldRange h = *this;
+ValueRange FieldRange::hull() const noexcept {
+  ValueRange h = *this;
+  if (std::isnan(off)) return h;
   if (off <= min) {
     h.min = off;
     h.min_open = false;
@@ -289,7 +285,6 @@ FieldRange FieldRange::hull() const noexcept {
     h.max = off;
     h.max_open = false;
   }
-  h.off = std::numeric_limits<double>::quiet_NaN();
   return h;
 }
 
@@ -388,7 +383,7 @@ std::string parameter_table_markdown() {
     }
     table += "| `" + std::string(field.name) + "` | `" + std::string(field.member) + "` | " +
              field_default_text(field) + " | " + std::string(field.unit) + " | " + doc + " | " +
-             escape(field.rule) + " |\n";
+             escape(field_rule_text(field)) + " |\n";
   }
   return table;
 }

@@ -29,16 +29,15 @@ std::string show(const YAML::Node& node) {
   return "nothing";
 }
 
-}  // namespace
-
-bool Range::contains(double x) const {
-  if (!std::isfinite(x) || std::abs(x) > max_input_magnitude) return false;
-  const bool above = min_open ? x > min : x >= min;
-  const bool below = max_open ? x < max : x <= max;
-  return above && below;
+//! A scenario key's number: finite, within the magnitude cap and in `range`.
+bool accepts(const Range& range, double x) {
+  return std::isfinite(x) && std::abs(x) <= max_input_magnitude && range.contains(x);
 }
 
-std::string Range::describe() const {
+}  // namespace
+
+std::string describe(const Range& range) {
+  const auto [min, max, min_open, max_open] = range;
   const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
   if (has_min && has_max) {
     return std::string("must be in ") + (min_open ? "(" : "[") + format_number(min) + ", " +
@@ -104,8 +103,8 @@ double ConfigSection::number(const std::string& key, double default_value, Range
     if (!parsed) fail(key, "expected a number, got '" + n.Scalar() + "'");
     value = *parsed;
   }
-  if (!range.contains(value))
-    fail(key, "value " + format_number(value) + " out of range: " + range.describe());
+  if (!accepts(range, value))
+    fail(key, "value " + format_number(value) + " out of range: " + describe(range));
   resolved_[key] = value;
   return value;
 }
@@ -190,9 +189,9 @@ std::vector<double> ConfigSection::numbers(const std::string& key,
         fail(key, "element " + std::to_string(i) + ": expected a number, got " + show(n[i]));
       }
       const double x = *parsed;
-      if (!range.contains(x)) {
+      if (!accepts(range, x)) {
         fail(key, "element " + std::to_string(i) + " = " + format_number(x) +
-                      " out of range: " + range.describe());
+                      " out of range: " + describe(range));
       }
       values.push_back(x);
     }

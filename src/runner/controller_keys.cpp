@@ -15,8 +15,7 @@ namespace {
 
 //! A row's range as a scenario key accepts it: with the value that switches its group off.
 Range key_range(const ParameterField& field) {
-  const FieldRange r = field.range.hull();
-  return {r.min, r.max, r.min_open, r.max_open};
+  return field.range.hull();
 }
 
 std::vector<std::string> choice_names(const ParameterField& field) {
@@ -88,6 +87,10 @@ void read_governor_keys(ConfigSection& c, ControllerParameters& p,
 }
 
 }  // namespace
+
+Range key_range(std::string_view name) {
+  return key_range(*find_parameter_field(name));
+}
 
 SteeringSystemOptions lead_wheel_options() {
   SteeringSystemOptions options;

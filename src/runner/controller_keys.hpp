@@ -4,6 +4,8 @@
 // row says, so that a key, its field, its range and its default cannot disagree. What the car
 // determines is left to steering_system_controller(), the one place that derives it.
 
+#include <string_view>
+
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
@@ -22,6 +24,10 @@ struct ControllerKeys {
 //! The options of the lead-wheel types: ControllerParameters' defaults, the car's groups (slip
 //! preview, friction guard) off unless their keys say otherwise.
 SteeringSystemOptions lead_wheel_options();
+
+//! The range a scenario key of the field table's row `name` accepts: the row's, with the value
+//! that switches its group off.
+io::Range key_range(std::string_view name);
 
 //! Reads the controller keys into `options`: every direct row of the field table into
 //! options.controller (its value on entry is the key's default), the switches `slip_preview` and

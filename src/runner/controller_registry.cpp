@@ -32,7 +32,8 @@ namespace {
 void read_wheelbases(ConfigSection& c, ChainParameters& chain, double vehicle_wheelbase_m) {
   const auto count = static_cast<std::size_t>(std::max(chain.order, 1));
   if (c.has("wheelbases_m")) {
-    const auto list = c.numbers("wheelbases_m", {}, count, count, Range::positive());
+    const auto list =
+        c.numbers("wheelbases_m", {}, count, count, detail::key_range("wheelbases_m"));
     for (std::size_t i = 0; i < list.size(); ++i) chain.wheelbases_m[i] = list[i];
     if (c.has("lead_wheelbase_m"))
       c.fail("lead_wheelbase_m", "give either wheelbases_m or lead_wheelbase_m");

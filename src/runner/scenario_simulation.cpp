@@ -114,6 +114,20 @@ void read_side_slip(ConfigSection& sim, SideSlipEstimation& estimation) {
                   {0.0, Observer::max_steering_offset_process_std_radps});
   estimation.compensate_steering_offset =
       slip.boolean("compensate_steering_offset", estimation.compensate_steering_offset);
+  // The compensation makes up for the observer's learned offset: without that state the key
+  // would do nothing, silently.
+  if (slip.has("compensate_steering_offset")) {
+    if (estimation.source != SideSlipSource::observer) {
+      slip.fail("compensate_steering_offset",
+                "has no effect with side_slip.source = " + source +
+                    " (it makes up for the observer's learned steering offset)");
+    }
+    if (estimation.max_steering_offset_rad == 0.0) {
+      slip.fail("compensate_steering_offset",
+                "has no effect with side_slip.max_steering_offset_rad = 0 (the observer then "
+                "learns no steering offset)");
+    }
+  }
   slip.finish();
   sim.store("side_slip", slip.resolved());
 }

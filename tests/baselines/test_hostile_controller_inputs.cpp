@@ -138,7 +138,7 @@ INSTANTIATE_TEST_SUITE_P(Baselines, EveryControllerUnderHostileInput,
 // distances overflow (-inf lateral errors), and a speed of 1e308 (LQR's NaN diagnostics). They lie
 // far beyond ControllerInputRange, so every comparison controller must refuse them with
 // invalid_input before any arithmetic.
-TEST(HostileControllerInput, TheIssuesCasesAreRefused) {
+TEST(HostileControllerInput, OverflowingCoordinatesAndSpeedsAreRefused) {
   auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 1000.0));
   for (const std::string& name : comparison_controller_names()) {
     auto controller = make_comparison_controller(name, setup_on(path));

@@ -57,7 +57,7 @@ TEST(ParameterFields, EveryFieldHasOneRowAndAUniqueName) {
       // them once it is enabled), and setting it back changes nothing.
       const ControllerParameters defaults;
       const double value = field.get(defaults);
-      if (!field.rule.empty() && field.group != ParameterGroup::governor) {
+      if (field_has_rule(field) && field.group != ParameterGroup::governor) {
         EXPECT_TRUE(field.range.contains(value)) << field.name;
       }
       ControllerParameters p;
@@ -72,7 +72,7 @@ TEST(ParameterFields, EveryFieldHasOneRowAndAUniqueName) {
 TEST(ParameterFields, EveryRuleHasItsOwnMessage) {
   int checked = 0;
   for (const ParameterField& field : controller_parameter_fields()) {
-    if (field.rule.empty() || field.kind == FieldKind::wheelbases) continue;
+    if (!field_has_rule(field) || field.kind == FieldKind::wheelbases) continue;
     ControllerParameters p;
     if (field.group == ParameterGroup::governor) {
       p.governor.enabled = true;
@@ -82,10 +82,26 @@ TEST(ParameterFields, EveryRuleHasItsOwnMessage) {
     const double value = out_of_range(field);
     field.set(p, value);
     expect_message(p, std::string(field.name) + " = " + exact_number(field.get(p)) + " " +
-                          std::string(field.rule));
+                          field_rule_text(field));
     ++checked;
   }
   EXPECT_GE(checked, 25);
+}
+
+// The rule texts come from the ranges: each shape of range reads as validate() states it.
+TEST(ParameterFields, RuleTextsAreDerivedFromTheRanges) {
+  auto rule = [](const char* name) { return field_rule_text(*find_parameter_field(name)); };
+  EXPECT_EQ(rule("k_rob"), "must be in [0, 1) (eq. sigma divides by 1 - k_rob)");
+  EXPECT_EQ(rule("lead_curvature_bound"), "must be finite and > 0 1/m");
+  EXPECT_EQ(rule("feedforward_curvature_rate"), "must be >= 0 1/m^2 (+inf: no rate limit)");
+  EXPECT_EQ(rule("actuator_delay_s"), "must be in [0, 1] s");  // off closes the open end
+  EXPECT_EQ(rule("disturbance_estimation_length_m"), "must be 0 (off) or in [1, 1000] m");
+  EXPECT_EQ(rule("max_lateral_acceleration_mps2"), "must be > 0 m/s^2 (+inf: no friction guard)");
+  EXPECT_EQ(rule("actuator_lag_count"), "must be 1, 2 or 3");
+  EXPECT_EQ(rule("surface"), "must be 0 (global) or 1 (paper)");
+  EXPECT_EQ(rule("approach_angle_rad"), "must be in (0, pi/2] rad");
+  EXPECT_EQ(rule("slip_preview_second_order"), "");
+  EXPECT_EQ(rule("governor.max_steering_angle_rad"), "");
 }
 
 TEST(ParameterFields, FlatFieldsSwitchTheirGroup) {
@@ -212,7 +228,7 @@ TEST(ParameterFields, InertAndConflictingCombinationsNameBothFields) {
   ControllerParameters third_order_governed = governed;
   third_order_governed.chain.order = 3;
   expect_message(third_order_governed,
-                 "governor.enabled = 3 the governor needs order 1 or 2 (the command's "
+                 "order = 3 must be 1 or 2 with governor.enabled = true (the command's "
                  "acceleration, resp. rate, is affine in the lead curvature only there)");
   ControllerParameters planned;
   planned.feedforward.curvature_preview = CurvaturePreview::planned_jumps;
@@ -229,6 +245,34 @@ TEST(ParameterFields, InertAndConflictingCombinationsNameBothFields) {
   expect_message(planned,
                  "curvature_preview (1 = planned_jumps) = 1 planned_jumps needs order 1 or 2 (the "
                  "plan's lags are simulated for those)");
+}
+
+// A setting another field leaves without effect is refused, naming that field; the same setting
+// where it acts passes.
+TEST(ParameterFields, InertSettingsNameTheFieldThatMakesThemInert) {
+  ControllerParameters ungoverned;
+  ungoverned.governor.margin = 0.05;
+  expect_message(ungoverned,
+                 "governor.margin = 0.05 has no effect while governor.enabled is false");
+  ControllerParameters governed = ungoverned;
+  governed.governor.enabled = true;
+  governed.governor.max_steering_rate_radps = 0.5;
+  governed.governor.max_steering_acceleration_radps2 = 2.0;
+  EXPECT_EQ(governed.validation_error(), "");
+
+  ControllerParameters paper_surface = with("approach_angle_rad", 1.0);
+  EXPECT_EQ(paper_surface.validation_error(), "");
+  paper_surface.law.surface = SlidingSurface::paper;
+  expect_message(paper_surface,
+                 "approach_angle_rad = 1 has no effect with surface = paper (psi_max shapes the "
+                 "global law's reference heading only)");
+
+  ControllerParameters unbounded = with("feedforward_catch_up", 0.5);
+  expect_message(unbounded,
+                 "feedforward_catch_up = 0.5 has no effect with feedforward_curvature_rate = +inf "
+                 "(an unlimited feedforward leaves no gap to catch up)");
+  unbounded.feedforward.curvature_rate = 0.01;
+  EXPECT_EQ(unbounded.validation_error(), "");
 }
 
 std::string between(const std::string& text, const std::string& begin, const std::string& end) {

@@ -47,10 +47,10 @@ TEST(ParameterValidation, RejectsEachInvalidField) {
   expect_rejected(p, "order = 9", "[0, 8]");
   p = {};
   p.chain.vehicle_wheelbase_m = 0.0;
-  expect_rejected(p, "vehicle_wheelbase_m = 0", "> 0");
+  expect_rejected(p, "vehicle_wheelbase_m = 0", "[0.01, 100] m");
   p = {};
   p.chain.vehicle_wheelbase_m = nan;
-  expect_rejected(p, "vehicle_wheelbase_m = nan", "finite");
+  expect_rejected(p, "vehicle_wheelbase_m = nan", "[0.01, 100] m");
   p = {};
   p.chain.wheelbases_m[0] = -2.5;
   expect_rejected(p, "wheelbases_m[0] (lambda_1) = -2.5", "> 0");

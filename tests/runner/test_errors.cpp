@@ -109,6 +109,9 @@ TEST_F(ScenarioErrors, OutOfRangeValues) {
   expect_contains(error_of(file, {"vehicle.mass_kg=0"}), {"'vehicle.mass_kg'", "out of range"});
   expect_contains(error_of(file, {"controller.feedforward_catch_up=2"}),
                   {file, "'controller.feedforward_catch_up'", "2", "[0, 1]"});
+  // wheelbases_m is read as a list, in the field table's range.
+  expect_contains(error_of(file, {"controller.wheelbases_m=[2.0, 0.005]"}),
+                  {"'controller.wheelbases_m'", "element 1 = 0.005", "[0.01, 100]"});
   expect_contains(error_of(file, {"controller.order=9"}), {"'controller.order'", "[0, 8]"});
   expect_contains(error_of(file, {"simulation.control_period_s=0.0125"}),
                   {"'simulation'", "control_period_s", "whole multiple"});
@@ -127,6 +130,21 @@ TEST_F(ScenarioErrors, OutOfRangeValues) {
                             "controller.cornering_target=rear_axle_exact",
                             "controller.feedforward_curvature_rate=0.02"}),
             "");
+}
+
+// The steering-offset compensation acts on the observer's learned offset: where there is none,
+// the key is refused naming what makes it inert.
+TEST_F(ScenarioErrors, AnInertSteeringOffsetCompensationIsRefused) {
+  const std::string file = write("o.yaml", valid);
+  const std::string key = "simulation.side_slip.compensate_steering_offset";
+  expect_contains(error_of(file, {key + "=false"}),
+                  {file, "'" + key + "'", "no effect with side_slip.source = none"});
+  expect_contains(error_of(file, {key + "=true", "simulation.side_slip.source=truth"}),
+                  {"'" + key + "'", "side_slip.source = truth"});
+  expect_contains(error_of(file, {key + "=true", "simulation.side_slip.source=observer",
+                                  "simulation.side_slip.max_steering_offset_rad=0"}),
+                  {"'" + key + "'", "side_slip.max_steering_offset_rad = 0"});
+  EXPECT_EQ(error_of(file, {key + "=false", "simulation.side_slip.source=observer"}), "");
 }
 
 TEST_F(ScenarioErrors, BadOverridesAndWaypointFiles) {

@@ -298,7 +298,7 @@ TEST_F(HostileInputs, EveryBadInputIsRejectedWithFileKeyAndRule) {
       {"wheelbases_m [1e-308, 1]",
        s,
        {"controller.wheelbases_m=[1e-308, 1]"},
-       {"FILE", "'controller'", "wheelbases_m[0] (lambda_1) = 1e-308", "[0.01, 100]"}},
+       {"FILE", "'controller.wheelbases_m'", "element 0 = 1e-308", "[0.01, 100]"}},
       // A path that doubles back on itself.
       {"waypoint CSV 0 -> 30 -> 0",
        "path: {type: waypoints_csv, file: pts_back.csv}\ncontroller: {type: lead_wheel}\n",

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/value_range.hpp"
 
 namespace smoothsteer {
 
@@ -28,19 +29,13 @@ enum class ParameterGroup {
   governor,
 };
 
-//! Values a field accepts on its own: [min, max] with open ends as flagged, or `off`.
-//! A closed infinite end admits that infinity (feedforward_curvature_rate = +inf: no limit).
-//! NaN is never in range.
-struct FieldRange {
-  double min = -std::numeric_limits<double>::infinity();
-  double max = std::numeric_limits<double>::infinity();
-  bool min_open = false;
-  bool max_open = false;
+//! Values a field accepts on its own: the interval (value_range.hpp), or `off`.
+struct FieldRange : ValueRange {
   //! The flat value that switches an optional group off (0 or +inf); NaN: none.
   double off = std::numeric_limits<double>::quiet_NaN();
   bool contains(double value) const noexcept;
-  //! The smallest closed-or-open interval that holds the range and `off` (scenario keys).
-  FieldRange hull() const noexcept;
+  //! The smallest interval that holds the range and `off` (the scenario keys' range).
+  ValueRange hull() const noexcept;
 };
 
 //! How a scenario file sets the field (src/runner/controller_registry.cpp).
@@ -55,8 +50,9 @@ struct ParameterField {
   FieldKind kind = FieldKind::real;
   FieldRange range{};
   std::string_view unit;  //!< SI unit, "" for pure numbers
-  //! The rule as validate() states it ("must be in [0, 1) (...)"); "" = no rule of its own.
-  std::string_view rule;
+  //! Why the range is what it is, appended to the rule text field_rule_text() derives from the
+  //! range (" (eq. sigma divides by 1 - k_rob)"); "" for none.
+  std::string_view rule_reason;
   std::string_view doc;
   //! kind choice: the enumerators' names in the order of their values, space separated.
   std::string_view choices;
@@ -84,6 +80,12 @@ bool group_enabled(const ControllerParameters& p, ParameterGroup group) noexcept
 std::string field_default_text(const ParameterField& field);
 //! The value of `field` in `p` as text (choice names, true/false).
 std::string field_value_text(const ParameterField& field, const ControllerParameters& p);
+//! Whether validate() checks the field's range on its own (not booleans, not unbounded fields).
+bool field_has_rule(const ParameterField& field) noexcept;
+//! The rule as validate() states it, derived from the range and unit, then the reason:
+//! "must be in [0, 1) (eq. sigma divides by 1 - k_rob)", "must be 0 (off) or in [1, 1000] m".
+//! "" for a field without a rule of its own.
+std::string field_rule_text(const ParameterField& field);
 //! The docs' parameter table (Markdown), generated from the field table.
 std::string parameter_table_markdown();
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "smoothsteer/io/text_checks.hpp"
+#include "smoothsteer/value_range.hpp"
 
 namespace smoothsteer::io {
 
@@ -24,20 +25,12 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-//! Allowed interval of a number; bounds are inclusive unless marked open. Every number must
-//! also be finite with magnitude <= max_input_magnitude (text_checks.hpp).
-struct Range {
-  double min = -std::numeric_limits<double>::infinity();
-  double max = std::numeric_limits<double>::infinity();
-  bool min_open = false;
-  bool max_open = false;
-  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
-  static Range non_negative() {
-    return {0.0, std::numeric_limits<double>::infinity(), false, false};
-  }
-  bool contains(double x) const;
-  std::string describe() const;
-};
+//! Allowed interval of a number (value_range.hpp). Every number must also be finite with
+//! magnitude <= max_input_magnitude (text_checks.hpp).
+using Range = ValueRange;
+//! "must be in [0, 1]", "must be > 0 and <= 1e+15": the range of a scenario key as its error
+//! message states it, the magnitude cap included.
+std::string describe(const Range& range);
 
 class ConfigSection {
  public:
