@@ -89,6 +89,7 @@ from ._smoothsteer import (  # noqa: F401
     VehicleLimits,
     comparison_controller_names,
     compare_robustness,
+    compare_tight_corners,
     default_imperfections,
     governed_feedforward_rate,
     governed_law_length,
@@ -100,6 +101,7 @@ from ._smoothsteer import (  # noqa: F401
     scaled_plant_vehicle,
     scenario_certificate,
     simulate_kinematic,
+    solve_kinetic_reference,
     solve_optimal_reaching,
     trace_column_names,
 )

@@ -1,5 +1,6 @@
 // The reaching benchmark of Tab. roc_vx / Fig. benchmark_e (include/smoothsteer/evaluation/):
-// the numerically optimal manoeuvre (Ipopt), HOSM, and the benchmark's own settings.
+// the numerically optimal manoeuvre (Ipopt), HOSM, and the benchmark's own settings; the
+// robustness and tight-corner comparisons and the kinetic tracking reference.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -13,9 +14,11 @@
 
 #include "bindings.hpp"
 #include "smoothsteer/baselines/hosm_controller.hpp"
+#include "smoothsteer/evaluation/kinetic_reference.hpp"
 #include "smoothsteer/evaluation/optimal_reaching.hpp"
 #include "smoothsteer/evaluation/reaching_benchmark.hpp"
 #include "smoothsteer/evaluation/robustness_comparison.hpp"
+#include "smoothsteer/evaluation/tight_corners.hpp"
 
 namespace smoothsteer::python {
 namespace {
@@ -60,6 +63,55 @@ py::dict compare_robustness(const std::vector<std::pair<std::string, double>>& s
   tables["summary"] = table_rows(result.summary);
   tables["summary_notes"] = result.summary.notes;
   return tables;
+}
+
+py::dict compare_tight_corners(const std::string& scenario_directory,
+                               const std::vector<std::string>& baselines, int threads) {
+  TightCornerOptions options;
+  options.corners = shipped_tight_corners(scenario_directory);
+  options.baselines = baselines;
+  options.threads = threads;
+  TightCornerResult result;
+  {
+    py::gil_scoped_release unlocked;  // about 20 s on two threads
+    result = run_tight_corner_study(options);
+  }
+  py::dict tables;
+  tables["runs"] = table_rows(result.table());
+  const ResultsTable summary = result.summary();
+  tables["summary"] = table_rows(summary);
+  tables["summary_notes"] = summary.notes;
+  return tables;
+}
+
+py::dict kinetic_reference(std::shared_ptr<const Path> path, const VehicleParameters& vehicle,
+                           double speed_mps, double start_arc_length_m, double duration_s,
+                           double time_step_s) {
+  KineticReferenceProblem problem;
+  problem.path = std::move(path);
+  problem.vehicle = vehicle;
+  problem.speed_mps = speed_mps;
+  problem.start_arc_length_m = start_arc_length_m;
+  problem.duration_s = duration_s;
+  problem.time_step_s = time_step_s;
+  KineticReference reference;
+  KineticReferenceCheck check;
+  {
+    py::gil_scoped_release unlocked;  // Ipopt: about a second for 1000 intervals
+    reference = solve_kinetic_reference(problem);
+    check = resimulate_kinetic_reference(problem, reference);
+  }
+  py::dict result;
+  result["converged"] = reference.converged;
+  result["solver_status"] = reference.solver_status;
+  result["max_abs_lateral_error_m"] = reference.max_abs_lateral_error_m;
+  result["resimulated_max_abs_lateral_error_m"] = check.max_abs_lateral_error_m;
+  result["time_s"] = array(reference.time_s);
+  result["lateral_error_m"] = array(reference.lateral_error_m);
+  result["steering_rad"] = array(reference.steering_rad);
+  result["steering_rate_radps"] = array(reference.steering_rate_radps);
+  result["steering_acceleration_radps2"] = array(reference.steering_acceleration_radps2);
+  return result;
 }
 
 py::dict solve(const py::kwargs& keywords) {
@@ -127,6 +179,22 @@ void bind_evaluation(py::module_& m) {
         "as (file, settle_time_s) pairs. Returns {'runs': [...], 'summary': [...], "
         "'summary_notes': [...]}, rows as dicts of the CSV's columns. Raises ValueError naming "
         "the bad option.");
+
+  m.def("compare_tight_corners", &compare_tight_corners,
+        py::arg("scenario_directory") = "scenarios",
+        py::arg("baselines") = std::vector<std::string>{}, py::arg("threads") = 1,
+        "The tight corners against the best baseline and the two optimal-control references "
+        "(smoothsteer compare corners, docs/corners.md); baselines empty: the tuning study's. "
+        "Returns {'runs': [...], 'summary': [...], 'summary_notes': [...]}, rows as dicts of "
+        "the CSV's columns. Raises ValueError naming the bad option.");
+  m.def("solve_kinetic_reference", &kinetic_reference, py::arg("path"), py::arg("vehicle"),
+        py::arg("speed_mps"), py::arg("start_arc_length_m") = 0.0, py::arg("duration_s") = 10.0,
+        py::arg("time_step_s") = 0.02,
+        "The least max |e| of the rear axle any steering reaches on the linear single track "
+        "under the vehicle's steering limits (kinetic_reference.hpp): a dict with "
+        "max_abs_lateral_error_m [m], its RK4 re-simulation, converged, solver_status and node "
+        "arrays time_s, lateral_error_m, steering_rad, steering_rate_radps, and the held "
+        "steering_acceleration_radps2 per interval. Raises ValueError naming the bad field.");
 
   using O = ReachingBenchmarkOptions;
   py::class_<O>(m, "ReachingBenchmarkOptions", "Settings of the reaching benchmark.")

@@ -36,15 +36,19 @@ KineticErrorModel kinetic_error_model(const VehicleParameters& vehicle, double v
 
 DiscreteKineticModel discretise(const KineticErrorModel& model, double h) {
   constexpr int n = kinetic_states;
-  Eigen::Matrix<double, n + 2, n + 2> augmented = Eigen::Matrix<double, n + 2, n + 2>::Zero();
+  // (x, u, kappa, kappa'): u and kappa' constant, kappa' the derivative of kappa.
+  using Augmented = Eigen::Matrix<double, n + 3, n + 3>;
+  Augmented augmented = Augmented::Zero();
   augmented.topLeftCorner<n, n>() = model.a * h;
   augmented.block<n, 1>(0, n) = model.input_u * h;
   augmented.block<n, 1>(0, n + 1) = model.input_kappa * h;
-  const Eigen::Matrix<double, n + 2, n + 2> exponential = augmented.exp();
+  augmented(n + 1, n + 2) = h;
+  const Augmented exponential = augmented.exp();
   DiscreteKineticModel discrete;
   discrete.phi = exponential.topLeftCorner<n, n>();
   discrete.gamma_u = exponential.block<n, 1>(0, n);
   discrete.gamma_kappa = exponential.block<n, 1>(0, n + 1);
+  discrete.gamma_kappa_rate = exponential.block<n, 1>(0, n + 2);
   return discrete;
 }
 

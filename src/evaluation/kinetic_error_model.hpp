@@ -25,12 +25,14 @@ struct KineticErrorModel {
 
 KineticErrorModel kinetic_error_model(const VehicleParameters& vehicle, double speed_mps);
 
-//! x_{k+1} = phi x_k + gamma_u u_k + gamma_kappa kappa_k with u and kappa held over h: the
-//! matrix exponential of the model augmented by its two inputs.
+//! x_{k+1} = phi x_k + gamma_u u_k + gamma_kappa kappa_k + gamma_kappa_rate (kappa_{k+1} -
+//! kappa_k) / h, with u held over the interval and kappa linear in time between its node values
+//! (exact on clothoids): the matrix exponential of the model augmented by u, kappa and kappa'.
 struct DiscreteKineticModel {
   KineticMatrix phi;
   KineticState gamma_u;
   KineticState gamma_kappa;
+  KineticState gamma_kappa_rate;
 };
 
 DiscreteKineticModel discretise(const KineticErrorModel& model, double time_step_s);

@@ -55,12 +55,25 @@ KineticReference solve_kinetic_reference(const KineticReferenceProblem& problem)
   const double h = problem.duration_s / intervals;
   const detail::DiscreteKineticModel model =
       detail::discretise(detail::kinetic_error_model(problem.vehicle, problem.speed_mps), h);
-  // The car progresses along the path at v (its errors small): kappa held at each interval's
-  // middle.
-  std::vector<double> curvature(static_cast<std::size_t>(intervals));
+  // The car progresses along the path at v (its errors small). On each interval kappa is taken
+  // linear in time: its slope between the interval's ends and its mean by Simpson's rule, so that
+  // an interval across a joint of two pieces still turns the path's heading by the right angle.
+  detail::IntervalCurvature curvature;
+  auto kappa = [&](double t) {
+    return curvature_at(*problem.path, problem.start_arc_length_m + problem.speed_mps * t);
+  };
+  constexpr int simpson_panels = 8;
   for (int k = 0; k < intervals; ++k) {
-    curvature[static_cast<std::size_t>(k)] =
-        curvature_at(*problem.path, problem.start_arc_length_m + problem.speed_mps * h * (k + 0.5));
+    const double t0 = h * k;
+    double mean = 0.0;
+    for (int j = 0; j <= simpson_panels; ++j) {
+      const double weight = (j == 0 || j == simpson_panels) ? 1.0 : (j % 2 == 1 ? 4.0 : 2.0);
+      mean += weight * kappa(t0 + h * j / simpson_panels);
+    }
+    mean /= 3.0 * simpson_panels;
+    const double rate = (kappa(t0 + h) - kappa(t0)) / h;
+    curvature.start.push_back(mean - 0.5 * h * rate);
+    curvature.rate.push_back(rate);
   }
   KineticReference reference;
   Ipopt::SmartPtr<Ipopt::TNLP> nlp =

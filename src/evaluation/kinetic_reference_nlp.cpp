@@ -13,19 +13,20 @@ constexpr double unbounded = 1e19;
 constexpr int lateral_error = 0, steering = 4, steering_rate = 5;  // state components
 
 // Variable layout: node k holds x_k at x[6k .. 6k + 5] for k = 0..N, the held u of interval k
-// sits at x[6(N + 1) + k], z is the last. Rows: 6 per interval,
-//   x_{k+1} - phi x_k - gamma_u u_k = gamma_kappa kappa_k   (equalities, exact transition),
+// sits at x[6(N + 1) + k], z is the last. Rows: 6 per interval, the exact transition
+//   x_{k+1} - phi x_k - gamma_u u_k = gamma_kappa kappa_k + gamma_kappa_rate kappa'_k
+//   (equalities; kappa linear on each interval, IntervalCurvature),
 // then 2 rows per node, e_k - z <= 0 and -e_k - z <= 0. Every row is linear: the Hessian of the
 // Lagrangian is zero.
 class KineticReferenceNlp final : public MinimumOfVariableNlp {
  public:
   KineticReferenceNlp(const KineticReferenceProblem& problem, const DiscreteKineticModel& model,
-                      const std::vector<double>& curvature, double h, KineticReference& result)
+                      const IntervalCurvature& curvature, double h, KineticReference& result)
       : p_(problem),
         model_(model),
         curvature_(curvature),
         result_(result),
-        n_(static_cast<int>(curvature.size())),
+        n_(static_cast<int>(curvature.start.size())),
         h_(h) {}
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_hess,
@@ -57,9 +58,11 @@ class KineticReferenceNlp final : public MinimumOfVariableNlp {
     for (int c = 0; c < n_x; ++c) x_l[c] = x_u[c] = 0.0;
     x_l[z_index()] = 0.0;
     for (int k = 0; k < n_; ++k) {
+      const double kappa = curvature_.start[static_cast<std::size_t>(k)];
+      const double kappa_rate = curvature_.rate[static_cast<std::size_t>(k)];
       for (int i = 0; i < n_x; ++i) {
         g_l[n_x * k + i] = g_u[n_x * k + i] =
-            model_.gamma_kappa(i) * curvature_[static_cast<std::size_t>(k)];
+            model_.gamma_kappa(i) * kappa + model_.gamma_kappa_rate(i) * kappa_rate;
       }
     }
     std::fill(g_l + n_x * n_, g_l + m, -unbounded);
@@ -145,7 +148,7 @@ class KineticReferenceNlp final : public MinimumOfVariableNlp {
 
   const KineticReferenceProblem& p_;
   const DiscreteKineticModel& model_;
-  const std::vector<double>& curvature_;
+  const IntervalCurvature& curvature_;
   KineticReference& result_;
   int n_;
   double h_;
@@ -155,7 +158,7 @@ class KineticReferenceNlp final : public MinimumOfVariableNlp {
 
 Ipopt::SmartPtr<Ipopt::TNLP> make_kinetic_reference_nlp(const KineticReferenceProblem& problem,
                                                         const DiscreteKineticModel& model,
-                                                        const std::vector<double>& curvature,
+                                                        const IntervalCurvature& curvature,
                                                         double time_step_s,
                                                         KineticReference& result) {
   return new KineticReferenceNlp(problem, model, curvature, time_step_s, result);

@@ -10,11 +10,16 @@
 
 namespace smoothsteer::detail {
 
-//! The LP of `problem` on `intervals` intervals of `model`'s step, the path's curvature held at
-//! each interval's middle (`curvature`, one per interval). finalize_solution() fills `result`.
+//! The path's curvature on each interval, linear in time: at its start, and its rate [1/(m s)].
+struct IntervalCurvature {
+  std::vector<double> start, rate;
+};
+
+//! The LP of `problem` on curvature.start.size() intervals of `model`'s step.
+//! finalize_solution() fills `result`.
 Ipopt::SmartPtr<Ipopt::TNLP> make_kinetic_reference_nlp(const KineticReferenceProblem& problem,
                                                         const DiscreteKineticModel& model,
-                                                        const std::vector<double>& curvature,
+                                                        const IntervalCurvature& curvature,
                                                         double time_step_s,
                                                         KineticReference& result);
 

@@ -31,8 +31,7 @@ EngagementStudyOptions case_options(const TightCornerOptions& options) {
 }
 
 //! The kinetic reference of a corner: the engagement bound's path, start, speed and horizon.
-//! On its own 0.02 s grid: the kinematic one's 0.04 s would double the error of holding the
-//! curvature over an interval (up to about 3 mm at 0.02 s on the hairpin's clothoids).
+//! On its own grid (0.02 s, the control period), not the kinematic one's.
 void solve_kinetic_case(const TightCorner& corner, const EngagementCase& c, EngagementRun& run,
                         KineticReferenceCheck& check) {
   run.controller = "kinetic_reference";

@@ -60,10 +60,12 @@ TEST(KineticReference, HeldControlsKeepTheLimitsAndReproduceTheError) {
     EXPECT_GT(*std::max_element(reference.steering_rad.begin(), reference.steering_rad.end()),
               0.15);
     const KineticReferenceCheck check = resimulate_kinetic_reference(problem, reference);
-    // The transcription holds kappa at each interval's middle; RK4 reads it continuously, which
-    // on the 6 m clothoids and 0.02 s intervals moves the error by up to about 3 mm.
-    EXPECT_NEAR(check.max_abs_lateral_error_m, reference.max_abs_lateral_error_m, 5e-3);
-    EXPECT_LT(check.max_node_lateral_deviation_m, 5e-3);
+    // The transcription takes kappa linear between the nodes (exact on clothoids, not across a
+    // joint of two pieces); RK4 reads it continuously.
+    EXPECT_LT(check.max_node_lateral_deviation_m, 1e-3);
+    // Only the nodes are bounded: between them |e| may exceed z a little.
+    EXPECT_GE(check.max_abs_lateral_error_m, reference.max_abs_lateral_error_m - 1e-3);
+    EXPECT_LT(check.max_abs_lateral_error_m, reference.max_abs_lateral_error_m + 5e-3);
   }
 }
 
@@ -76,6 +78,10 @@ TEST(KineticReference, PositiveWhereTheRateBinds) {
   const KineticReference fast = solve_kinetic_reference(hairpin_problem(speed));
   ASSERT_TRUE(fast.converged) << fast.solver_status;
   EXPECT_GT(fast.max_abs_lateral_error_m, 0.01);
+  const KineticReferenceCheck check = resimulate_kinetic_reference(hairpin_problem(speed), fast);
+  EXPECT_LT(check.max_node_lateral_deviation_m, 1e-3);
+  EXPECT_GE(check.max_abs_lateral_error_m, fast.max_abs_lateral_error_m - 1e-3);
+  EXPECT_LT(check.max_abs_lateral_error_m, fast.max_abs_lateral_error_m + 5e-3);
   // With the rate to spare (half the speed) the preview makes up for the slip's lag.
   const KineticReference slow = solve_kinetic_reference(hairpin_problem(0.5 * speed));
   ASSERT_TRUE(slow.converged) << slow.solver_status;

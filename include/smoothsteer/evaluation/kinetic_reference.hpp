@@ -8,11 +8,12 @@
 //!   e' = v psi + vy - lr r,   psi' = r - v kappa(s0 + v t),
 //!   vy' = (Fyf + Fyr) / m - v r,   r' = (lf Fyf - lr Fyr) / Iz,   delta'' = u,
 //!   Fyf = Cf (delta - (vy + lf r) / v),   Fyr = -Cr (vy - lr r) / v,
-//! linear in x, u and the path's curvature: held on each interval of a uniform time grid, the
-//! transition is the matrix exponential (exact), and minimising z subject to -z <= e_k <= z is a
-//! linear program (Ipopt). Unlike the kinematic reference of engagement_bound.hpp it carries the
-//! slip's lag behind the steering; it leaves out the tires' saturation (the Magic Formula's
-//! slope falls with the load) and the actuator's lag, both of which only make a corner harder.
+//! linear in x, u and the path's curvature: with u held and kappa linear in time on each interval
+//! of a uniform time grid, the transition is the matrix exponential (exact), and minimising z
+//! subject to -z <= e_k <= z at the nodes is a linear program (Ipopt). Unlike the kinematic
+//! reference of engagement_bound.hpp it carries the slip's lag behind the steering; it leaves out
+//! the tires' saturation (the Magic Formula's slope falls with the load) and the actuator's lag,
+//! both of which only make a corner harder.
 
 #include <memory>
 #include <optional>
