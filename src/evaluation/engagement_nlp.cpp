@@ -95,12 +95,8 @@ class EngagementNlp final : public MinimumOfVariableNlp {
   }
 
   void jacobian_pattern(Index* rows, Index* columns) const override {
-    Index entry = 0;
-    auto add = [&](Index row, Index column) {
-      rows[entry] = row;
-      columns[entry] = column;
-      ++entry;
-    };
+    SparsityWriter pattern{rows, columns};
+    auto add = [&](Index row, Index column) { pattern.add(row, column); };
     for (int k = 0; k < n_; ++k) {
       const Index a = 5 * k, b = 5 * (k + 1), row = state_count * k;
       for (int i = 0; i < 3; ++i) {
@@ -115,7 +111,7 @@ class EngagementNlp final : public MinimumOfVariableNlp {
       add(row + 4, b + 4);
       add(row + 4, u_index(k));
     }
-    min_max_rows().append_pattern(rows, columns, entry);
+    min_max_rows().append_pattern(pattern);
   }
 
   void jacobian_values(const Number* x, Number* values) const override {

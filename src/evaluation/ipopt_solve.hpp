@@ -56,9 +56,21 @@ void append_pattern(const Ipopt::Index (&pairs)[N][2], Ipopt::Index* rows, Ipopt
   }
 }
 
+//! Writes a sparsity pattern entry by entry: (row, column) pairs in Ipopt's order.
+struct SparsityWriter {
+  Ipopt::Index* rows;
+  Ipopt::Index* columns;
+  Ipopt::Index entry = 0;
+  void add(Ipopt::Index row, Ipopt::Index column) noexcept {
+    rows[entry] = row;
+    columns[entry] = column;
+    ++entry;
+  }
+};
+
 //! The rows e_k - z <= 0 and -e_k - z <= 0 of a min-max transcription, two per node k = 0..nodes-1
 //! from row `first_row`, with e_k at variable stride k + offset and z at `z_index`: their values
-//! into g, their sparsity and their (constant) Jacobian entries appended at `entry`.
+//! into g, their sparsity and their (constant) Jacobian entries appended.
 struct MinMaxRows {
   Ipopt::Index first_row = 0;
   int nodes = 0;
@@ -73,19 +85,13 @@ struct MinMaxRows {
       g[first_row + 2 * k + 1] = -e - x[z_index];
     }
   }
-  void append_pattern(Ipopt::Index* rows, Ipopt::Index* columns,
-                      Ipopt::Index& entry) const noexcept {
+  void append_pattern(SparsityWriter& pattern) const noexcept {
     for (int k = 0; k < nodes; ++k) {
       const Ipopt::Index e = stride * k + offset;
-      const Ipopt::Index pairs[4][2] = {{first_row + 2 * k, e},
-                                        {first_row + 2 * k, z_index},
-                                        {first_row + 2 * k + 1, e},
-                                        {first_row + 2 * k + 1, z_index}};
-      for (const auto& pair : pairs) {
-        rows[entry] = pair[0];
-        columns[entry] = pair[1];
-        ++entry;
-      }
+      pattern.add(first_row + 2 * k, e);
+      pattern.add(first_row + 2 * k, z_index);
+      pattern.add(first_row + 2 * k + 1, e);
+      pattern.add(first_row + 2 * k + 1, z_index);
     }
   }
   void append_values(Ipopt::Number* values, Ipopt::Index& entry) const noexcept {

@@ -88,12 +88,8 @@ class KineticReferenceNlp final : public MinimumOfVariableNlp {
   }
 
   void jacobian_pattern(Index* rows, Index* columns) const override {
-    Index entry = 0;
-    auto add = [&](Index row, Index column) {
-      rows[entry] = row;
-      columns[entry] = column;
-      ++entry;
-    };
+    SparsityWriter pattern{rows, columns};
+    auto add = [&](Index row, Index column) { pattern.add(row, column); };
     for (int k = 0; k < n_; ++k) {
       for (int i = 0; i < n_x; ++i) {
         const Index row = n_x * k + i;
@@ -102,7 +98,7 @@ class KineticReferenceNlp final : public MinimumOfVariableNlp {
         add(row, u_index(k));
       }
     }
-    min_max_rows().append_pattern(rows, columns, entry);
+    min_max_rows().append_pattern(pattern);
   }
 
   void jacobian_values(const Number*, Number* values) const override {
