@@ -122,18 +122,20 @@ EngagementRun failed_run(const std::string& name, const std::string& error) {
 
 }  // namespace
 
+std::vector<std::string> engagement_case_overrides(const EngagementCase& c) {
+  std::vector<std::string> overrides{"start.y_m=" + ResultsTable::number(c.offset_m, 6),
+                                     "start.heading_rad=" + ResultsTable::number(c.heading_rad, 6)};
+  if (c.speed_overridden) {
+    overrides.push_back("speed.initial_mps=" + ResultsTable::number(c.speed_mps, 6));
+  }
+  return overrides;
+}
+
 void run_engagement_case(const std::string& file, const EngagementStudyOptions& options,
                          EngagementCase& out) {
   runner::Scenario scenario;
   try {
-    // The overrides of `smoothsteer run --set`, applied to the file as the CLI does.
-    std::vector<std::string> overrides{
-        "start.y_m=" + ResultsTable::number(out.offset_m, 6),
-        "start.heading_rad=" + ResultsTable::number(out.heading_rad, 6)};
-    if (out.speed_overridden) {
-      overrides.push_back("speed.initial_mps=" + ResultsTable::number(out.speed_mps, 6));
-    }
-    scenario = runner::load_scenario(file, overrides);
+    scenario = runner::load_scenario(file, engagement_case_overrides(out));
   } catch (const std::exception& error) {
     // Every row stays in the table, marked failed.
     out.certified = failed_run("scenario", error.what());

@@ -1,5 +1,5 @@
 // Tight corners (tight_corners.hpp): the engagement family's runs, started on the path, on the
-// corners where the steering rate binds.
+// corners where the car's steering is asked the most, and the kinetic reference of each.
 
 #include "smoothsteer/evaluation/tight_corners.hpp"
 
@@ -38,11 +38,8 @@ void solve_kinetic_case(const TightCorner& corner, const EngagementCase& c, Enga
   run.reaching_distance_m = std::nan("");
   run.max_abs_e_m = std::nan("");
   try {
-    std::vector<std::string> overrides;
-    if (c.speed_overridden) {
-      overrides.push_back("speed.initial_mps=" + ResultsTable::number(c.speed_mps, 6));
-    }
-    const runner::Scenario scenario = runner::load_scenario(corner.file, overrides);
+    const runner::Scenario scenario =
+        runner::load_scenario(corner.file, engagement_case_overrides(c));
     if (scenario.plan) {
       run.note = "no reference: the path changes gear";
       return;

@@ -88,6 +88,10 @@ struct EngagementStudyResult {
   std::string summary_markdown() const;
 };
 
+//! The overrides of `smoothsteer run --set` that make a scenario file a case: its start offset
+//! and heading, and its speed when speed_overridden.
+std::vector<std::string> engagement_case_overrides(const EngagementCase& c);
+
 //! Every real-time baseline of the tuning study (the default of options.baselines).
 std::vector<std::string> default_study_baselines();
 
