@@ -13,9 +13,6 @@ std::optional<Violation> KineticReferenceProblem::first_violation() const noexce
   if (auto broken = vehicle.first_violation()) return broken;
   RuleChecker check("KineticReferenceProblem");
   check.require_positive({{"speed_mps", speed_mps}, {"duration_s", duration_s}});
-  check.require(positive_finite(vehicle.max_steering_acceleration_radps2),
-                "vehicle.max_steering_acceleration_radps2",
-                vehicle.max_steering_acceleration_radps2, "must be finite and > 0");
   check.require(std::isfinite(start_arc_length_m), "start_arc_length_m", start_arc_length_m,
                 "must be finite");
   check.require(positive_finite(time_step_s) && time_step_s <= 0.1, "time_step_s", time_step_s,

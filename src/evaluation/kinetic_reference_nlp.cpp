@@ -44,15 +44,19 @@ class KineticReferenceNlp final : public MinimumOfVariableNlp {
     std::fill(x_l, x_l + n, -unbounded);
     std::fill(x_u, x_u + n, unbounded);
     const VehicleParameters& car = p_.vehicle;
+    // A limit the car does not have (+inf) leaves its variable free.
+    const double angle = std::min(car.max_steering_angle_rad, unbounded);
+    const double rate = std::min(car.max_steering_rate_radps, unbounded);
+    const double acceleration = std::min(car.max_steering_acceleration_radps2, unbounded);
     for (int k = 0; k <= n_; ++k) {
-      x_l[n_x * k + steering] = -car.max_steering_angle_rad;
-      x_u[n_x * k + steering] = car.max_steering_angle_rad;
-      x_l[n_x * k + steering_rate] = -car.max_steering_rate_radps;
-      x_u[n_x * k + steering_rate] = car.max_steering_rate_radps;
+      x_l[n_x * k + steering] = -angle;
+      x_u[n_x * k + steering] = angle;
+      x_l[n_x * k + steering_rate] = -rate;
+      x_u[n_x * k + steering_rate] = rate;
     }
     for (int k = 0; k < n_; ++k) {
-      x_l[u_index(k)] = -car.max_steering_acceleration_radps2;
-      x_u[u_index(k)] = car.max_steering_acceleration_radps2;
+      x_l[u_index(k)] = -acceleration;
+      x_u[u_index(k)] = acceleration;
     }
     // On the path, straight and at rest in the path's frame: the simulator's start.
     for (int c = 0; c < n_x; ++c) x_l[c] = x_u[c] = 0.0;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "smoothsteer/evaluation/kinetic_reference.hpp"
 #include "smoothsteer/runner/scenario.hpp"
@@ -86,6 +87,16 @@ TEST(KineticReference, PositiveWhereTheRateBinds) {
   const KineticReference slow = solve_kinetic_reference(hairpin_problem(0.5 * speed));
   ASSERT_TRUE(slow.converged) << slow.solver_status;
   EXPECT_LT(slow.max_abs_lateral_error_m, 0.2 * fast.max_abs_lateral_error_m);
+}
+
+TEST(KineticReference, ACarWithoutAnAccelerationLimitIsAccepted) {
+  KineticReferenceProblem problem = hairpin_problem(15.5);
+  const double bounded = solve_kinetic_reference(problem).max_abs_lateral_error_m;
+  problem.vehicle.max_steering_acceleration_radps2 = std::numeric_limits<double>::infinity();
+  const KineticReference free = solve_kinetic_reference(problem);
+  ASSERT_TRUE(free.converged) << free.solver_status;
+  // One constraint fewer: never worse.
+  EXPECT_LE(free.max_abs_lateral_error_m, bounded + 1e-6);
 }
 
 TEST(KineticReference, ProblemsNameTheBrokenRule) {
