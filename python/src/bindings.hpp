@@ -56,8 +56,8 @@ void bind_system(py::module_& m);
 
 //! A point from any sequence of two numbers (tuple, list, numpy array); TypeError otherwise.
 Vec2 to_vec2(const py::handle& point, const char* argument);
-//! Sets the attributes of `target` (a bound object) from keyword arguments; an unknown name
-//! raises TypeError naming it and the class.
+//! Sets the attributes of `target` (a bound object) from keyword arguments, `enabled` last; an
+//! unknown name raises TypeError naming it and the class.
 void set_attributes(py::object& target, const py::kwargs& keywords);
 //! A default T with the attributes `keywords` names set (set_attributes): the keyword
 //! constructor of the bound parameter structs.

@@ -87,8 +87,9 @@ void field_from_python(const ParameterField& field, ControllerParameters& p,
 
 //! Binds every row of the field table whose member lies in `group` (prefix "law." for
 //! ControllerParameters::law) as a property of the group's class, named and documented as the
-//! table says: the table is the one list of a group's members. A group member set through its
-//! group sets that member alone; the flat attribute is the one that switches the group.
+//! table says: the table is the one list of a group's members. A member set through its group
+//! does what its flat attribute does: one that switches its group (actuator_delay_s) switches
+//! it, any other leaves `enabled` as it is.
 template <typename Group>
 void bind_group_fields(py::class_<Group>& group_class, Group ControllerParameters::*group,
                        std::string_view prefix) {
@@ -109,7 +110,7 @@ void bind_group_fields(py::class_<Group>& group_class, Group ControllerParameter
           p.*group = g;
           field_from_python(*f, p, value);
           if constexpr (requires { g.enabled; }) {
-            if (!is_switch) (p.*group).enabled = g.enabled;
+            if (!is_switch && !f->switches_group) (p.*group).enabled = g.enabled;
           }
           g = p.*group;
         },
@@ -128,6 +129,10 @@ py::list field_rows() {
     row["doc"] = std::string(field.doc);
     row["default"] = field_default_text(field);
     row["scenario_key"] = field.scenario == ScenarioKey::direct;
+    row["switches_group"] = field.switches_group;
+    row["min"] = field.range.min;
+    row["max"] = field.range.max;
+    row["off"] = std::isnan(field.range.off) ? py::object(py::none()) : py::float_(field.range.off);
     rows.append(row);
   }
   return rows;
@@ -295,7 +300,8 @@ void bind_controller(py::module_& m) {
       "p.feedforward, the optional compensations, p.governor). Keyword arguments set any field "
       "by its flat name from the field table: ControllerParameters(order=2, "
       "lead_curvature_bound=0.1, actuator_delay_s=0.048); a compensation's flat field switches "
-      "its group on (0, resp. inf for max_lateral_acceleration_mps2, off).");
+      "its group on (0, resp. inf for max_lateral_acceleration_mps2, off), and so does the "
+      "same member set through its group (p.delay_compensation.actuator_delay_s = 0.048).");
   parameters_class
       .def(py::init([](const py::kwargs& keywords) {
         py::object object = py::cast(P{});
@@ -336,7 +342,8 @@ void bind_controller(py::module_& m) {
                   py::arg("front_curvature_bound"), py::arg("k_rob"),
                   "The C^0 controller (n = 1), eq. (ext1).")
       .def_static("fields", &field_rows,
-                  "The field table: one dict per field (name, member, kind, unit, rule, doc).")
+                  "The field table: one dict per field (name, member, unit, rule, doc, default, "
+                  "scenario_key, switches_group, min, max, off).")
       .def("__repr__", [](const P& p) {
         return "ControllerParameters(order=" + std::to_string(p.chain.order) +
                ", vehicle_wheelbase_m=" + std::to_string(p.chain.vehicle_wheelbase_m) +

@@ -29,8 +29,13 @@ void set_attributes(py::object& target, const py::kwargs& keywords) {
       throw py::type_error(std::string(py::str(py::type::of(target).attr("__name__"))) +
                            ": unknown keyword '" + name + "'");
     }
-    py::setattr(target, key, value);
   }
+  // `enabled` last: a compensation's value switches its group, and an `enabled` given with it
+  // says what the caller wants whatever the keywords' order.
+  for (const auto& [key, value] : keywords) {
+    if (std::string(py::str(key)) != "enabled") py::setattr(target, key, value);
+  }
+  if (keywords.contains("enabled")) py::setattr(target, "enabled", keywords["enabled"]);
 }
 
 }  // namespace smoothsteer::python

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/io/trace_csv.hpp"
 #include "smoothsteer/runner/run_output.hpp"
 #include "smoothsteer/runner/scenario.hpp"
@@ -60,8 +59,8 @@ py::tuple run(const runner::Scenario& scenario) {
 //! rate [rad/m] and acceleration [rad/m^2] per metre travelled, and the box bound of the
 //! invariant sets [rad/m]; None for any other controller (a schedule's bounds are in its CSV).
 py::object certificate(const runner::Scenario& scenario) {
-  const std::unique_ptr<SteeringController> controller = runner::make_controller(scenario);
-  const auto* lead_wheel = dynamic_cast<const LeadWheelController*>(controller.get());
+  const std::unique_ptr<LeadWheelController> lead_wheel =
+      runner::make_lead_wheel_controller(scenario);
   if (!lead_wheel) return py::none();
   py::dict bounds;
   bounds["rate_per_meter"] = lead_wheel->certificate().rate_per_meter;

@@ -32,6 +32,37 @@ def test_a_flat_field_switches_its_group():
     assert not guard.friction_guard.enabled
 
 
+def state(p):
+    """Every flat field and every group's switch: what a setter can change."""
+    values = {row["name"]: getattr(p, row["name"]) for row in ss.ControllerParameters.fields()
+              if not row["name"].startswith("governor.")}
+    values.update({group: getattr(p, group).enabled for group in GROUP_CLASSES
+                   if group not in UNGATED})
+    return values
+
+
+def test_a_member_set_through_its_group_does_what_its_flat_field_does():
+    switching = [row for row in ss.ControllerParameters.fields() if row["switches_group"]]
+    assert len(switching) >= 5
+    for row in switching:
+        group, attribute = row["member"].split(".", 1)
+        # One value inside the range and the off value (0 where the group has two switching
+        # fields, the slip gradients: either one nonzero keeps it on).
+        inside = row["min"] + 0.5 * (min(row["max"], row["min"] + 1.0) - row["min"])
+        off = row["off"] if row["off"] is not None else 0.0
+        for start in (inside, off):
+            for value in (inside, off):
+                flat = ss.ControllerParameters(**{row["name"]: start})
+                grouped = ss.ControllerParameters(**{row["name"]: start})
+                setattr(flat, row["name"], value)
+                setattr(getattr(grouped, group), attribute, value)
+                assert state(grouped) == state(flat), (row["name"], start, value)
+    # The group's own keyword constructor: an explicit `enabled` wins whatever its position.
+    assert ss.DelayCompensation(actuator_delay_s=0.048).enabled
+    assert not ss.DelayCompensation(enabled=False, actuator_delay_s=0.048).enabled
+    assert not ss.DelayCompensation(actuator_delay_s=0.048, enabled=False).enabled
+
+
 def test_groups_are_attributes_and_keywords():
     p = ss.ControllerParameters()
     p.chain.order = 1

@@ -25,11 +25,12 @@ struct OwnSchedule {
 };
 
 OwnSchedule own_schedule(const runner::Scenario& scenario) {
-  const std::unique_ptr<SteeringController> own = runner::make_controller(scenario);
-  const auto* scheduled = dynamic_cast<const ScheduledController*>(own.get());
+  const std::unique_ptr<ScheduledController> scheduled =
+      runner::make_scheduled_controller(scenario);
   if (scheduled == nullptr) {
     throw std::invalid_argument(scenario.file + ": key 'controller.type': the certified route " +
-                                "needs a scheduled_lead_wheel, not '" + own->name() + "'");
+                                "needs a scheduled_lead_wheel, not '" +
+                                runner::make_controller(scenario)->name() + "'");
   }
   TuningOptions options = scheduled->schedule().options();
   apply_path_demand(options, scenario.path);

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -56,8 +58,8 @@ void read_wheelbases(ConfigSection& c, ChainParameters& chain, double vehicle_wh
 
 //! The paper's controller (Sec. II-III) with ControllerParameters' defaults (n = 2, k_rob = 0.3,
 //! the rear axle on curved paths) and the wheelbases of Sec. IV-A.
-std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
-                                                    const ControllerContext& context) {
+std::unique_ptr<LeadWheelController> make_lead_wheel(ConfigSection& c,
+                                                     const ControllerContext& context) {
   SteeringSystemOptions options = lead_wheel_options();
   read_controller_keys(c, options, context.vehicle, {});
   read_wheelbases(c, options.controller.chain, context.vehicle.wheelbase_m());
@@ -71,8 +73,8 @@ std::unique_ptr<SteeringController> make_lead_wheel(ConfigSection& c,
 
 //! The lead-wheel controller with a gain schedule from `smoothsteer tune` (docs/tuning.md):
 //! `schedule` is the CSV, relative to the scenario file; lambda, lambda_l and kbar_l follow |v|.
-std::unique_ptr<SteeringController> make_scheduled_lead_wheel(ConfigSection& c,
-                                                              const ControllerContext& context) {
+std::unique_ptr<ScheduledController> make_scheduled_lead_wheel(ConfigSection& c,
+                                                               const ControllerContext& context) {
   const VehicleDescription car{context.vehicle, context.actuator};
   const std::shared_ptr<const Path>& path = context.path;
   // The Smith predictor's delay and the catch-up over speed from the car (speed_compensation.hpp)
@@ -134,8 +136,8 @@ DrivingDomain read_domain(ConfigSection& c, const VehicleParameters& vehicle) {
 //! over a driving domain from the vehicle file and the actuator, no schedule CSV. Every law key
 //! of lead_wheel, with the car's block (default_steering_system_controller()) as the default;
 //! max_speed_mps (40), feedforward_headroom (1.2), and `domain`.
-std::unique_ptr<SteeringController> make_car_system(ConfigSection& c,
-                                                    const ControllerContext& context) {
+std::unique_ptr<ScheduledController> make_car_system(ConfigSection& c,
+                                                     const ControllerContext& context) {
   SteeringSystemOptions options;
   options.max_speed_mps = c.number("max_speed_mps", 40.0, {1.0, 100.0});
   options.feedforward_headroom =
@@ -156,6 +158,9 @@ struct Registry {
       {"lead_wheel", make_lead_wheel},
       {"scheduled_lead_wheel", make_scheduled_lead_wheel},
       {"steering_system", make_car_system}};
+  //! The names whose factory is still the built-in one (make_lead_wheel_controller() and
+  //! make_scheduled_controller() build only these).
+  std::set<std::string> built_in{"lead_wheel", "scheduled_lead_wheel", "steering_system"};
 };
 
 Registry& registry() {
@@ -169,6 +174,7 @@ void register_controller_type(const std::string& name, ControllerFactory factory
   Registry& r = registry();
   std::lock_guard lock(r.mutex);
   r.factories[name] = std::move(factory);
+  r.built_in.erase(name);
 }
 
 std::vector<std::string> controller_types() {
@@ -179,16 +185,48 @@ std::vector<std::string> controller_types() {
   return names;
 }
 
+namespace {
+
+//! The section's `type`; without one (or without the section) the car's own system: one front
+//! door, built from the scenario's vehicle and actuator alone.
+std::string controller_type(ConfigSection& c) {
+  return c.text("type", "steering_system", controller_types());
+}
+
+//! Builds a built-in type with its own factory as make_controller() would, or nullptr when the
+//! section's type is none of `types`.
+template <class Concrete>
+std::unique_ptr<Concrete> make_built_in(
+    const YAML::Node& section, const std::string& key_path, const std::string& file,
+    const ControllerContext& context,
+    std::initializer_list<std::pair<
+        const char*, std::unique_ptr<Concrete> (*)(ConfigSection&, const ControllerContext&)>>
+        types) {
+  ConfigSection c(section, key_path, file);
+  const std::string type = controller_type(c);
+  {
+    Registry& r = registry();
+    std::lock_guard lock(r.mutex);
+    if (!r.built_in.contains(type)) return nullptr;
+  }
+  for (const auto& [name, factory] : types) {
+    if (type != name) continue;
+    std::unique_ptr<Concrete> controller = factory(c, context);
+    c.finish();
+    return controller;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
 std::unique_ptr<SteeringController> make_controller(
     const YAML::Node& section, const std::string& key_path, const std::string& file,
     const ControllerContext& context, YAML::Node* resolved,
     std::shared_ptr<const std::set<std::string>> overridden_keys) {
   ConfigSection c(section, key_path, file);
   c.set_overridden_keys(std::move(overridden_keys));
-  const std::vector<std::string> types = controller_types();
-  // Without a type (or without the section) the car's own system: one front door, built from
-  // the scenario's vehicle and actuator alone.
-  const std::string type = c.text("type", "steering_system", types);
+  const std::string type = controller_type(c);
   ControllerFactory factory;
   {
     Registry& r = registry();
@@ -199,6 +237,23 @@ std::unique_ptr<SteeringController> make_controller(
   c.finish();
   if (resolved) *resolved = c.resolved();
   return controller;
+}
+
+std::unique_ptr<LeadWheelController> make_lead_wheel_controller(const YAML::Node& section,
+                                                                const std::string& key_path,
+                                                                const std::string& file,
+                                                                const ControllerContext& context) {
+  return make_built_in<LeadWheelController>(section, key_path, file, context,
+                                            {{"lead_wheel", make_lead_wheel}});
+}
+
+std::unique_ptr<ScheduledController> make_scheduled_controller(const YAML::Node& section,
+                                                               const std::string& key_path,
+                                                               const std::string& file,
+                                                               const ControllerContext& context) {
+  return make_built_in<ScheduledController>(
+      section, key_path, file, context,
+      {{"scheduled_lead_wheel", make_scheduled_lead_wheel}, {"steering_system", make_car_system}});
 }
 
 }  // namespace smoothsteer::runner

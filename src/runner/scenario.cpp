@@ -102,6 +102,16 @@ std::unique_ptr<SteeringController> make_controller(const Scenario& s) {
   return make_controller(s.controller, "controller", s.file, {s.path, s.vehicle, s.actuator});
 }
 
+std::unique_ptr<LeadWheelController> make_lead_wheel_controller(const Scenario& s) {
+  return make_lead_wheel_controller(s.controller, "controller", s.file,
+                                    {s.path, s.vehicle, s.actuator});
+}
+
+std::unique_ptr<ScheduledController> make_scheduled_controller(const Scenario& s) {
+  return make_scheduled_controller(s.controller, "controller", s.file,
+                                   {s.path, s.vehicle, s.actuator});
+}
+
 SimulationResult simulate_scenario(const Scenario& s, SteeringController& controller,
                                    const TraceObserver& observer) {
   const std::unique_ptr<VehicleModel> model = make_vehicle_model(s);

@@ -121,6 +121,27 @@ TEST(Registry, OtherLibrariesCanAddControllerTypes) {
   }
 }
 
+TEST(Scenarios, TheConcreteFactoriesBuildTheirOwnTypeAndNoOther) {
+  const Scenario fixed = load_scenario((source_dir() / "scenarios/reaching_p02pi.yaml").string());
+  const Scenario scheduled =
+      load_scenario((source_dir() / "scenarios/lane_change_15.yaml").string());
+  const Scenario car = load_scenario((source_dir() / "scenarios/lane_change_15.yaml").string(),
+                                     {"controller={type: steering_system}"});
+  const std::unique_ptr<LeadWheelController> lead_wheel = make_lead_wheel_controller(fixed);
+  ASSERT_NE(lead_wheel, nullptr);
+  EXPECT_STREQ(lead_wheel->name(), make_controller(fixed)->name());
+  EXPECT_EQ(make_scheduled_controller(fixed), nullptr);
+  EXPECT_EQ(make_lead_wheel_controller(scheduled), nullptr);
+  EXPECT_NE(make_scheduled_controller(scheduled), nullptr);
+  EXPECT_NE(make_scheduled_controller(car), nullptr);
+  EXPECT_EQ(make_lead_wheel_controller(car), nullptr);
+  // The same key checks as make_controller(): an unknown key is refused.
+  EXPECT_THROW(
+      make_lead_wheel_controller(YAML::Load("{type: lead_wheel, no_such_key: 1}"), "controller",
+                                 fixed.file, {fixed.path, fixed.vehicle, fixed.actuator}),
+      io::ConfigError);
+}
+
 TEST(Sweep, GridPaperVariationsAndParallelRunsAgreeWithSequentialRuns) {
   const auto grid = sweep_grid({parse_sweep_axis("a=1,2,3"), parse_sweep_axis("b.c=x,y")});
   ASSERT_EQ(grid.size(), 6u);

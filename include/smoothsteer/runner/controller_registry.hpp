@@ -11,9 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "smoothsteer/vehicle/steering_actuator.hpp"
 #include "smoothsteer/vehicle/vehicle_parameters.hpp"
 
@@ -42,5 +44,20 @@ std::unique_ptr<SteeringController> make_controller(
     const YAML::Node& section, const std::string& key_path, const std::string& file,
     const ControllerContext& context, YAML::Node* resolved = nullptr,
     std::shared_ptr<const std::set<std::string>> overridden_keys = nullptr);
+
+//! The built-in types as their own classes, for a caller that reads what the generic
+//! SteeringController does not show (a fixed controller's certificate, a schedule's template):
+//! built as make_controller() builds them, nullptr when the section's type is another one or
+//! register_controller_type() replaced the built-in.
+//! lead_wheel:
+std::unique_ptr<LeadWheelController> make_lead_wheel_controller(const YAML::Node& section,
+                                                                const std::string& key_path,
+                                                                const std::string& file,
+                                                                const ControllerContext& context);
+//! scheduled_lead_wheel or steering_system:
+std::unique_ptr<ScheduledController> make_scheduled_controller(const YAML::Node& section,
+                                                               const std::string& key_path,
+                                                               const std::string& file,
+                                                               const ControllerContext& context);
 
 }  // namespace smoothsteer::runner

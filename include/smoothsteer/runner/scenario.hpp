@@ -14,12 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/path/path_plan.hpp"
 #include "smoothsteer/sim/metrics.hpp"
 #include "smoothsteer/sim/simulation.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "smoothsteer/vehicle/double_track.hpp"
 
 namespace smoothsteer::runner {
@@ -70,6 +72,9 @@ std::shared_ptr<const Path> make_path(io::ConfigSection& path_section,
 std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& scenario);
 //! Builds the scenario's controller through the registry.
 std::unique_ptr<SteeringController> make_controller(const Scenario& scenario);
+//! The scenario's controller as its own class (controller_registry.hpp), nullptr for other types.
+std::unique_ptr<LeadWheelController> make_lead_wheel_controller(const Scenario& scenario);
+std::unique_ptr<ScheduledController> make_scheduled_controller(const Scenario& scenario);
 
 //! Simulates the scenario with `controller` (the one wiring of the CLI, run_scenario() and
 //! Python): the plant from make_vehicle_model(), the car's steering system believing the
