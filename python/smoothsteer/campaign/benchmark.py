@@ -11,11 +11,14 @@ is reported), each into a fresh directory:
   rounds (its start is reported apart), as campaigns run one after another from Python;
 - fresh: run_campaign(workers=N) as the command line runs it, the start of its cluster (or its
   decision to run in this process) included.
+- plain processes: N forked processes, each a plain loop of run_case over its share of the
+  cases, no Dask and no results.csv: what the machine's cores give at best at that moment.
 Speed-up is the serial time over the configuration's, efficiency the speed-up over N. "case in
 its process" is the mean of results.csv's elapsed_s (run_scenario alone, where it ran): against
 the serial run's, it shows what the cores' sharing costs a case. "busy" is the sum of elapsed_s
 over the wall time of the threads that ran the cases: what the scheduling leaves idle."""
 import argparse
+import multiprocessing
 import os
 import sys
 import tempfile
@@ -25,6 +28,7 @@ import numpy as np
 import yaml
 
 from . import LocalCampaignCluster, run_campaign
+from .cases import run_case
 from .results import read_rows
 from .spec import load_spec
 
@@ -55,14 +59,41 @@ def timed(directory, spec, **where):
     return elapsed, run, float(read_rows(out, spec)["elapsed_s"].sum())
 
 
+def _share(arguments):
+    spec, cases = arguments
+    return sum(run_case(spec, case)["elapsed_s"] for case in cases)
+
+
+def plain_processes(spec, workers):
+    """Wall time and summed case time of the cases on `workers` forked plain loops."""
+    shares = [(spec, range(first, spec.cases, workers)) for first in range(workers)]
+    with multiprocessing.get_context("fork").Pool(workers) as pool:
+        pool.map(_share, [(spec, []) for _ in range(workers)])  # the processes are up
+        started = time.perf_counter()
+        busy = sum(pool.map(_share, shares))
+        elapsed = time.perf_counter() - started
+    return elapsed, None, busy
+
+
 def measure(spec, directory, cluster, workers, rounds):
-    """{configuration: [(wall s, CampaignRun), ...]} over the rounds."""
-    measured = {"serial": [], "kept cluster": [], "fresh": []}
+    """{configuration: [(wall s, CampaignRun or None, summed case time), ...]} over the rounds."""
+    measured = {"serial": [], "kept cluster": [], "fresh": [], "plain processes": []}
     for _ in range(rounds):
         measured["serial"].append(timed(directory, spec, serial=True))
         measured["kept cluster"].append(timed(directory, spec, client=cluster))
         measured["fresh"].append(timed(directory, spec, workers=workers))
+        measured["plain processes"].append(plain_processes(spec, workers))
     return measured
+
+
+def _threads(run, workers):
+    return workers if run is None else max(run.workers, 1)
+
+
+def _place(run, workers):
+    if run is None:
+        return f"{workers} processes"
+    return f"{run.workers} workers" if run.workers else "this process"
 
 
 def report(spec, measured, workers):
@@ -74,10 +105,9 @@ def report(spec, measured, workers):
     for label, values in measured.items():
         elapsed = float(np.median([value[0] for value in values]))
         case_ms = float(np.median([1e3 * value[2] / spec.cases for value in values]))
-        busy = float(np.median([value[2] / (value[0] * max(value[1].workers, 1))
+        busy = float(np.median([value[2] / (value[0] * _threads(value[1], workers))
                                 for value in values]))
-        places = sorted({f"{run.workers} workers" if run.workers else "this process"
-                         for _, run, _ in values})
+        places = sorted({_place(run, workers) for _, run, _ in values})
         speed_up = serial / elapsed
         print(f"| {label} | {elapsed:.2f} | {speed_up:.2f} | "
               f"{100 * speed_up / (workers if label != 'serial' else 1):.0f} % | "
