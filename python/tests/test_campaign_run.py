@@ -16,7 +16,7 @@ from conftest import ROOT, python_environment
 from smoothsteer import campaign
 from smoothsteer.campaign.cases import run_batch
 from smoothsteer.campaign.results import ResultFile
-from smoothsteer.campaign.run import local_client
+from smoothsteer.campaign.cluster import local_client
 from smoothsteer.campaign.spec_file import CampaignSpecError
 
 

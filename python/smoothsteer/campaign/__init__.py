@@ -10,6 +10,9 @@ From Python:
     from smoothsteer import campaign
     run = campaign.run_campaign("docs/campaigns/lane_change.yaml", "out/lane_change")
     campaign.write_report("docs/campaigns/lane_change.yaml", "out/lane_change")
+    with campaign.LocalCampaignCluster(workers=2) as cluster:  # started once, kept
+        campaign.run_campaign("a.yaml", "out/a", client=cluster)
+        campaign.run_campaign("b.yaml", "out/b", client=cluster)
 
 Results go to DIR/results.csv as they come (one row per case); running the same command again
 resumes a killed campaign without repeating a finished case. The report is DIR/report.md and
@@ -17,7 +20,8 @@ its PNGs."""
 import argparse
 import sys
 
-from .run import CampaignRun, local_client, run_cases
+from .cluster import LocalCampaignCluster
+from .run import CampaignRun, run_cases
 from .spec import CampaignSpec, load_spec
 from .spec_file import CampaignSpecError
 
@@ -30,35 +34,31 @@ def run_campaign(spec, out, scheduler=None, workers=None, client=None, serial=Fa
                  batch_size=None, progress=True, batch_runner=None):
     """Runs the cases of a campaign that `out` does not hold yet; returns a CampaignRun.
 
-    spec: a spec file or a CampaignSpec. Where: `client` (a distributed.Client), else
-    `scheduler` (its address), else `serial=True` (this process), else a LocalCluster of
-    `workers` processes (default: the machine's cores), closed at the end. batch_size: cases
-    per task (default: the spec's, else about 8 tasks per worker, at most 32 cases).
-    batch_runner replaces cases.run_batch (tests)."""
+    spec: a spec file or a CampaignSpec. Where: `client` (a distributed.Client, or a
+    LocalCampaignCluster kept across calls), else `scheduler` (its address), else `serial=True`
+    (this process), else a LocalCluster of `workers` processes (default: the machine's cores),
+    started only if it pays for its start (else the cases run in this process) and closed at
+    the end. batch_size: cases per task (default: the spec's, else cut from a measured case's
+    time, docs/campaigns.md). batch_runner replaces cases.run_batch (tests)."""
     spec = _spec(spec)
-    cluster = None
+    owned = None
     if not serial and client is None:
         if scheduler:
             from distributed import Client
 
             try:
-                client = Client(scheduler)
+                client = owned = Client(scheduler)
             except Exception as error:  # noqa: BLE001 - any failure to connect is the address's
                 raise CampaignSpecError(f"--scheduler {scheduler}: cannot connect to a Dask "
                                         f"scheduler: {type(error).__name__}: {error}") from None
         else:
-            client, cluster = local_client(workers)
-        own_client = True
-    else:
-        own_client = False
+            client = owned = LocalCampaignCluster(workers)
     try:
         return run_cases(spec, str(out), client=client, serial=serial, batch_size=batch_size,
                          progress=progress, batch_runner=batch_runner)
     finally:
-        if own_client:
-            client.close()
-        if cluster is not None:
-            cluster.close()
+        if owned is not None:
+            owned.close()
 
 
 def write_report(spec, out, replay_trace=True):
@@ -92,7 +92,8 @@ def main(argv=None):
             run = run_campaign(spec, arguments.out, scheduler=arguments.scheduler,
                                workers=arguments.workers, serial=arguments.serial,
                                batch_size=arguments.batch_size, progress=not arguments.quiet)
-            print(f"{spec.name}: ran {run.ran} cases ({run.recovered} were done) in "
+            where = f"{run.workers} workers" if run.workers else "this process"
+            print(f"{spec.name}: ran {run.ran} cases ({run.recovered} were done) on {where} in "
                   f"{run.elapsed_s:.1f} s, {run.cases_per_second:.1f} cases/s, "
                   f"{run.failed} failed, {run.lost_tasks} tasks lost -> {run.results}")
         if not arguments.no_report:
@@ -107,5 +108,5 @@ def main(argv=None):
     return 0
 
 
-__all__ = ["CampaignRun", "CampaignSpec", "CampaignSpecError", "load_spec", "run_campaign",
-           "write_report", "main"]
+__all__ = ["CampaignRun", "CampaignSpec", "CampaignSpecError", "LocalCampaignCluster", "load_spec",
+           "run_campaign", "write_report", "main"]

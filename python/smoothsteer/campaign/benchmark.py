@@ -1,119 +1,143 @@
-"""Cases per second of a campaign: a plain loop over run_scenario() in one process against the
-campaign in this process and on a LocalCluster of 1 and 2 workers (docs/benchmarks.md).
+"""Parallel efficiency of campaigns (docs/benchmarks.md): the same cases in this process and on
+a LocalCluster of N workers, for each campaign size given.
 
     PYTHONPATH=build/ci/python /usr/bin/python3 -m smoothsteer.campaign.benchmark \
-        docs/campaigns/lane_change.yaml --cases 400
+        docs/campaigns/lane_change.yaml --range speed.initial_mps=5:7 --cases 3000 300
 
-Every configuration runs the same cases 0 .. N-1 of the spec into a fresh directory, and the
-configurations take turns for --rounds rounds (the machine's load drifts; the median is
-reported). The cluster's start is timed apart from its run. The per-case overhead of the
-cluster is the difference of the 1-worker campaign and the plain loop, per case: both use one
-core for the cases, so it is what the scheduling, the transfer of batches and rows, and the CSV
-cost. "run in the worker" is the mean of results.csv's elapsed_s: run_scenario() alone, as the
-worker measured it."""
+Per size and round, three configurations take turns (the machine's load drifts; the median
+is reported), each into a fresh directory:
+- serial: run_campaign(serial=True);
+- kept cluster: run_campaign(client=cluster) on a LocalCampaignCluster started once before the
+  rounds (its start is reported apart), as campaigns run one after another from Python;
+- fresh: run_campaign(workers=N) as the command line runs it, the start of its cluster (or its
+  decision to run in this process) included.
+- plain processes: N forked processes, each a plain loop of run_case over its share of the
+  cases, no Dask and no results.csv: what the machine's cores give at best at that moment.
+Speed-up is the serial time over the configuration's, efficiency the speed-up over N. "case in
+its process" is the mean of results.csv's elapsed_s (run_scenario alone, where it ran): against
+the serial run's, it shows what the cores' sharing costs a case. "busy" is the sum of elapsed_s
+over the wall time of the threads that ran the cases: what the scheduling leaves idle."""
 import argparse
+import multiprocessing
 import os
 import sys
 import tempfile
 import time
 
 import numpy as np
+import yaml
 
-from .. import run_scenario
-from .run import local_client, run_cases
+from . import LocalCampaignCluster, run_campaign
+from .cases import run_case
+from .results import read_rows
 from .spec import load_spec
 
 
-def plain_loop(spec, cases):
-    overrides = [spec.case_overrides(case) for case in range(cases)]
+def restricted_spec(file, ranges, directory):
+    """The spec with each `key=low:high` of `ranges` as its variable's range, written to
+    `directory` (its base made absolute); returns the copy's path."""
+    with open(file, encoding="utf-8") as handle:
+        content = yaml.safe_load(handle)
+    content["base"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(file)),
+                                                    content["base"]))
+    for item in ranges:
+        key, bounds = item.split("=", 1)
+        low, high = (float(bound) for bound in bounds.split(":"))
+        content["variables"][key].update(low=low, high=high)
+    path = os.path.join(directory, "benchmark_spec.yaml")
+    with open(path, "w", encoding="utf-8") as handle:
+        yaml.safe_dump(content, handle, sort_keys=False)
+    return path
+
+
+def timed(directory, spec, **where):
+    out = os.path.join(directory, f"run_{time.time_ns()}")
     started = time.perf_counter()
-    for case_overrides in overrides:
-        run_scenario(spec.base, case_overrides)
-    return time.perf_counter() - started
-
-
-def _mean_elapsed(out, spec):
-    from .results import read_rows
-
-    return float(read_rows(out, spec)["elapsed_s"].mean())
-
-
-def campaign_time(spec, directory, workers, batch_size):
-    """(wall time of the cases, cluster start, mean run time in the worker)."""
-    out = os.path.join(directory, f"workers_{workers}_{time.time_ns()}")
-    if workers == 0:
-        run = run_cases(spec, out, serial=True, batch_size=batch_size, progress=False)
-        return run.elapsed_s, 0.0, _mean_elapsed(out, spec)
-    started = time.perf_counter()
-    client, cluster = local_client(workers)
-    start_s = time.perf_counter() - started
-    try:
-        run = run_cases(spec, out, client=client, batch_size=batch_size, progress=False)
-    finally:
-        client.close()
-        cluster.close()
+    run = run_campaign(spec, out, progress=False, **where)
+    elapsed = time.perf_counter() - started
     assert run.ran == spec.cases and run.failed == 0, run
-    return run.elapsed_s, start_s, _mean_elapsed(out, spec)
+    return elapsed, run, float(read_rows(out, spec)["elapsed_s"].sum())
 
 
-def _nothing(spec, cases):
-    return []
+def _share(arguments):
+    spec, cases = arguments
+    return sum(run_case(spec, case)["elapsed_s"] for case in cases)
 
 
-def task_overhead(spec, tasks=400):
-    """Wall time per task of an empty batch on a LocalCluster of 1 worker, sent as the
-    campaign sends its batches (the spec travels with each)."""
-    from distributed import as_completed
-
-    client, cluster = local_client(1)
-    try:
-        client.submit(_nothing, spec, [], pure=False).result()  # the worker imports smoothsteer
+def plain_processes(spec, workers):
+    """Wall time and summed case time of the cases on `workers` forked plain loops."""
+    shares = [(spec, range(first, spec.cases, workers)) for first in range(workers)]
+    with multiprocessing.get_context("fork").Pool(workers) as pool:
+        pool.map(_share, [(spec, []) for _ in range(workers)])  # the processes are up
         started = time.perf_counter()
-        for future in as_completed([client.submit(_nothing, spec, [case], pure=False)
-                                    for case in range(tasks)]):
-            future.result()
-        return (time.perf_counter() - started) / tasks
-    finally:
-        client.close()
-        cluster.close()
+        busy = sum(pool.map(_share, shares))
+        elapsed = time.perf_counter() - started
+    return elapsed, None, busy
+
+
+def measure(spec, directory, cluster, workers, rounds):
+    """{configuration: [(wall s, CampaignRun or None, summed case time), ...]} over the rounds."""
+    measured = {"serial": [], "kept cluster": [], "fresh": [], "plain processes": []}
+    for _ in range(rounds):
+        measured["serial"].append(timed(directory, spec, serial=True))
+        measured["kept cluster"].append(timed(directory, spec, client=cluster))
+        measured["fresh"].append(timed(directory, spec, workers=workers))
+        measured["plain processes"].append(plain_processes(spec, workers))
+    return measured
+
+
+def _threads(run, workers):
+    return workers if run is None else max(run.workers, 1)
+
+
+def _place(run, workers):
+    if run is None:
+        return f"{workers} processes"
+    return f"{run.workers} workers" if run.workers else "this process"
+
+
+def report(spec, measured, workers):
+    serial = float(np.median([value[0] for value in measured["serial"]]))
+    print(f"\n{spec.cases} cases")
+    print("| configuration | wall s | speed-up | efficiency | ran on | case in its process, ms | "
+          "busy |")
+    print("|---|---|---|---|---|---|---|")
+    for label, values in measured.items():
+        elapsed = float(np.median([value[0] for value in values]))
+        case_ms = float(np.median([1e3 * value[2] / spec.cases for value in values]))
+        busy = float(np.median([value[2] / (value[0] * _threads(value[1], workers))
+                                for value in values]))
+        places = sorted({_place(run, workers) for _, run, _ in values})
+        speed_up = serial / elapsed
+        print(f"| {label} | {elapsed:.2f} | {speed_up:.2f} | "
+              f"{100 * speed_up / (workers if label != 'serial' else 1):.0f} % | "
+              f"{', '.join(places)} | {case_ms:.1f} | {100 * busy:.0f} % |")
+    probe = [1e3 * run.case_s for _, run, _ in measured["kept cluster"]]
+    print(f"case time measured before spreading: {', '.join(f'{v:.1f}' for v in probe)} ms")
 
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("spec")
-    parser.add_argument("--cases", type=int, default=400)
-    parser.add_argument("--batch-size", type=int, default=None,
-                        help="cases per task (default: the campaign's own choice)")
+    parser.add_argument("--cases", type=int, nargs="+", default=[3000, 300])
+    parser.add_argument("--range", action="append", default=[], metavar="KEY=LOW:HIGH",
+                        help="a variable's range instead of the spec's")
+    parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--rounds", type=int, default=3)
     arguments = parser.parse_args(argv)
-    spec = load_spec(arguments.spec)
-    spec.cases = arguments.cases
-    labels = ["plain loop over run_scenario, one process", "campaign in this process (--serial)",
-              "campaign, LocalCluster of 1 worker", "campaign, LocalCluster of 2 workers"]
-    measured = {label: [] for label in labels}
     with tempfile.TemporaryDirectory() as directory:
-        for _ in range(arguments.rounds):
-            measured[labels[0]].append((plain_loop(spec, spec.cases), 0.0, float("nan")))
-            for workers, label in enumerate(labels[1:]):
-                measured[label].append(campaign_time(spec, directory, workers,
-                                                     arguments.batch_size))
-    median = {label: [float(np.median([m[i] for m in values])) for i in range(3)]
-              for label, values in measured.items()}
-    print(f"{spec.name}: {spec.cases} cases, {os.cpu_count()} cores, median of "
-          f"{arguments.rounds} rounds, load average {os.getloadavg()[0]:.1f} at the end")
-    print("| configuration | cases/s | wall ms per case | run in the worker, ms | "
-          "cluster start [s] |")
-    print("|---|---|---|---|---|")
-    for label in labels:
-        elapsed, start_s, in_worker = median[label]
-        print(f"| {label} | {spec.cases / elapsed:.1f} | {1e3 * elapsed / spec.cases:.2f} | "
-              f"{'' if np.isnan(in_worker) else f'{1e3 * in_worker:.2f}'} | "
-              f"{f'{start_s:.1f}' if start_s else ''} |")
-    plain = median[labels[0]][0] / spec.cases
-    overhead = median[labels[2]][0] / spec.cases - plain
-    print(f"per-case overhead of the cluster (1 worker - plain loop): {1e3 * overhead:.2f} ms "
-          f"({100.0 * overhead / plain:.1f} % of a case)")
-    print(f"one empty task on a LocalCluster of 1 worker: {1e3 * task_overhead(spec):.2f} ms")
+        spec = load_spec(restricted_spec(arguments.spec, arguments.range, directory))
+        print(f"{spec.name} {' '.join(arguments.range)}: {os.cpu_count()} cores, "
+              f"{arguments.workers} workers, median of {arguments.rounds} rounds, load average "
+              f"{os.getloadavg()[0]:.2f} at the start")
+        with LocalCampaignCluster(arguments.workers) as cluster:
+            cluster.client.run(lambda: None)  # started and the workers answering
+            print(f"kept cluster's start: {cluster.start_s:.2f} s")
+            for cases in arguments.cases:
+                spec.cases = cases
+                report(spec, measure(spec, directory, cluster, arguments.workers,
+                                     arguments.rounds), arguments.workers)
+        print(f"\nload average {os.getloadavg()[0]:.2f} at the end")
     return 0
 
 

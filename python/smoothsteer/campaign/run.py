@@ -2,24 +2,29 @@
 on the machine's cores, or a scheduler's workers), in batches, each batch's rows appended to
 results.csv as it finishes.
 
+On Dask, a few cases run in this process first to measure a case's time; the batches are then
+cut from it (sizing.py), and a LocalCluster that is not running yet is started only if the
+cluster is estimated to pay for its start; otherwise the cases run in this process.
+
 A batch whose worker dies is lost as a whole (its rows come back only at its end). Its cases are
 sent again one per task; a case whose task is lost twice is written as failed (error_kind
-`worker_died`) with the last error, so no case is dropped. The LocalCluster's scheduler has
-`allowed-failures` 0, so that every loss is counted here, and `worker-saturation` 1, so that a
-worker holds only the task it runs and its death costs no queued task a loss. An external
-scheduler retries a task itself first (its `distributed.scheduler.allowed-failures`, 3 by
-default) and may queue tasks on a worker."""
+`worker_died`) with the last error, so no case is dropped. The LocalCluster counts every loss
+here (cluster.py). An external scheduler retries a task itself first (its
+`distributed.scheduler.allowed-failures`, 3 by default) and may queue tasks on a worker."""
 import collections
-import logging
-import os
 import time
 from dataclasses import dataclass
 
 from .cases import failed_row, run_batch
+from .cluster import LocalCampaignCluster
 from .results import ResultFile
+from .sizing import CLUSTER_START_S_PER_WORKER, PROBE_CASES, guided_batch_size, use_cluster
 
 CASE_FAILURES = 2  # losses of a case before it is written as failed
-MAX_BATCH = 32
+# Rows of a run in this process are flushed at least every this many cases.
+MAX_SERIAL_BATCH = 32
+# Tasks submitted per worker thread: the one it runs and the next, waiting at the scheduler.
+TASKS_PER_THREAD = 2
 
 
 @dataclass
@@ -32,19 +37,19 @@ class CampaignRun:
     ran: int  # cases run by this call
     failed: int  # of those, rows with status failed
     lost_tasks: int  # tasks lost with their worker
-    elapsed_s: float
+    elapsed_s: float  # the cluster's start included, if this call started it
     workers: int  # worker threads (0: in this process)
+    cluster_start_s: float = 0.0  # the start of a LocalCluster by this call
+    case_s: float = float("nan")  # a case's time measured before the cases were spread
 
     @property
     def cases_per_second(self):
         return self.ran / self.elapsed_s if self.elapsed_s > 0 else float("nan")
 
 
-def default_batch_size(pending, threads):
-    """About 8 batches per worker thread, at most MAX_BATCH cases each: small enough that the
-    load spreads and a lost worker costs little, large enough that the overhead of a task
-    (about a millisecond, docs/benchmarks.md) is small against a case (tens of milliseconds)."""
-    return max(1, min(MAX_BATCH, pending // (8 * max(threads, 1))))
+def serial_batch_size(pending):
+    """About 8 batches, at most MAX_SERIAL_BATCH cases each: a kill loses few rows."""
+    return max(1, min(MAX_SERIAL_BATCH, pending // 8))
 
 
 def batches(cases, size):
@@ -71,19 +76,6 @@ class _Progress:
         self.bar.close()
 
 
-def local_client(workers):
-    """A Client of a LocalCluster of `workers` single-thread processes (default: the cores)."""
-    import dask
-    from distributed import Client, LocalCluster
-
-    with dask.config.set({"distributed.scheduler.allowed-failures": 0,
-                          "distributed.scheduler.worker-saturation": 1.0}):
-        cluster = LocalCluster(n_workers=workers or os.cpu_count(), threads_per_worker=1,
-                               processes=True, dashboard_address=None,
-                               silence_logs=logging.CRITICAL)
-    return Client(cluster), cluster
-
-
 class _Runner:
     def __init__(self, spec, results, progress, batch_runner):
         self.spec, self.results, self.progress = spec, results, progress
@@ -104,17 +96,26 @@ class _Runner:
         for batch in batches(pending, size):
             self.record(self.batch_runner(self.spec, list(batch)))
 
-    def dask(self, client, pending, size):
+    def dask(self, client, pending, size, case_s):
+        """The cases on the client's workers: batches of `size` cases, else cut as they are
+        sent from the remaining cases and `case_s`; lost batches are sent again first."""
         from distributed import as_completed
 
         threads = sum(client.nthreads().values()) or 1
-        queue = collections.deque(batches(pending, size))
+        fresh = collections.deque(pending)
+        retries = collections.deque()
         in_flight = {}
         completed = as_completed(with_results=False)
 
+        def next_batch():
+            if retries:
+                return retries.popleft()
+            count = size or guided_batch_size(len(fresh), threads, case_s)
+            return tuple(fresh.popleft() for _ in range(min(count, len(fresh))))
+
         def fill():
-            while queue and len(in_flight) < max(8, 4 * threads):
-                batch = queue.popleft()
+            while (retries or fresh) and len(in_flight) < TASKS_PER_THREAD * threads:
+                batch = next_batch()
                 future = client.submit(self.batch_runner, self.spec, list(batch), pure=False)
                 in_flight[future.key] = batch
                 completed.add(future)
@@ -129,11 +130,18 @@ class _Runner:
             try:
                 rows = future.result()
             except Exception as error:  # noqa: BLE001 - a lost task; its cases run again
-                self.lose(batch, error, queue)
+                self.lose(batch, error, retries)
             else:
                 self.record(rows)
             future.release()
             fill()
+
+    def probe(self, pending):
+        """Runs the first cases here; returns a case's mean wall time."""
+        cases = pending[:PROBE_CASES]
+        started = time.perf_counter()
+        self.serial(cases, len(cases))
+        return (time.perf_counter() - started) / max(len(cases), 1)
 
     def lose(self, batch, error, queue):
         self.lost += 1
@@ -153,21 +161,36 @@ class _Runner:
 
 def run_cases(spec, out, client=None, serial=False, batch_size=None, progress=True,
               batch_runner=None):
-    """Runs the cases of `spec` that DIR/results.csv lacks; returns a CampaignRun."""
+    """Runs the cases of `spec` that DIR/results.csv lacks; returns a CampaignRun. client: a
+    distributed.Client, or a LocalCampaignCluster (started here if the cluster pays)."""
     results = ResultFile(out, spec)
     pending = [case for case in range(spec.cases) if case not in results.done]
-    threads = 0 if serial else sum(client.nthreads().values())
-    size = batch_size or spec.batch_size or default_batch_size(len(pending), threads)
+    size = batch_size or spec.batch_size
     bar = _Progress(spec, len(results.done & set(range(spec.cases))), progress)
     runner = _Runner(spec, results, bar, batch_runner)
+    local = client if isinstance(client, LocalCampaignCluster) else None
+    threads, case_s, start_s = 0, float("nan"), 0.0
     started = time.perf_counter()
     try:
-        if serial:
-            runner.serial(pending, size)
+        if not serial and pending and (size is None or (local and not local.started)):
+            case_s = runner.probe(pending)
+            pending = pending[PROBE_CASES:]
+        if local and not local.started and not use_cluster(
+                len(pending), case_s, local.workers, CLUSTER_START_S_PER_WORKER * local.workers):
+            serial = True
+            bar.note(f"{spec.name}: {len(pending)} cases of {1e3 * case_s:.0f} ms run in this "
+                     f"process; starting {local.workers} workers would not pay")
+        if serial or not pending:
+            runner.serial(pending, size or serial_batch_size(len(pending)))
         else:
-            runner.dask(client, pending, size)
+            if local:
+                was_started = local.started
+                client = local.client
+                start_s = 0.0 if was_started else local.start_s
+            threads = sum(client.nthreads().values())
+            runner.dask(client, pending, size, case_s)
     finally:
         bar.close()
         results.close()
     return CampaignRun(results.path, spec.cases, results.recovered, runner.ran, runner.failed,
-                       runner.lost, time.perf_counter() - started, threads)
+                       runner.lost, time.perf_counter() - started, threads, start_s, case_s)
