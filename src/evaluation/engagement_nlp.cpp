@@ -96,20 +96,19 @@ class EngagementNlp final : public MinimumOfVariableNlp {
 
   void jacobian_pattern(Index* rows, Index* columns) const override {
     SparsityWriter pattern{rows, columns};
-    auto add = [&](Index row, Index column) { pattern.add(row, column); };
     for (int k = 0; k < n_; ++k) {
       const Index a = 5 * k, b = 5 * (k + 1), row = state_count * k;
       for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 4; ++j) add(row + i, a + j);
-        for (int j = 0; j < 4; ++j) add(row + i, b + j);
+        for (int j = 0; j < 4; ++j) pattern.add(row + i, a + j);
+        for (int j = 0; j < 4; ++j) pattern.add(row + i, b + j);
       }
-      add(row + 3, a + 3);
-      add(row + 3, b + 3);
-      add(row + 3, a + 4);
-      add(row + 3, b + 4);
-      add(row + 4, a + 4);
-      add(row + 4, b + 4);
-      add(row + 4, u_index(k));
+      pattern.add(row + 3, a + 3);
+      pattern.add(row + 3, b + 3);
+      pattern.add(row + 3, a + 4);
+      pattern.add(row + 3, b + 4);
+      pattern.add(row + 4, a + 4);
+      pattern.add(row + 4, b + 4);
+      pattern.add(row + 4, u_index(k));
     }
     min_max_rows().append_pattern(pattern);
   }

@@ -93,13 +93,12 @@ class KineticReferenceNlp final : public MinimumOfVariableNlp {
 
   void jacobian_pattern(Index* rows, Index* columns) const override {
     SparsityWriter pattern{rows, columns};
-    auto add = [&](Index row, Index column) { pattern.add(row, column); };
     for (int k = 0; k < n_; ++k) {
       for (int i = 0; i < n_x; ++i) {
         const Index row = n_x * k + i;
-        for (int j = 0; j < n_x; ++j) add(row, n_x * k + j);
-        add(row, n_x * (k + 1) + i);
-        add(row, u_index(k));
+        for (int j = 0; j < n_x; ++j) pattern.add(row, n_x * k + j);
+        pattern.add(row, n_x * (k + 1) + i);
+        pattern.add(row, u_index(k));
       }
     }
     min_max_rows().append_pattern(pattern);
