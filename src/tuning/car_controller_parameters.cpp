@@ -42,6 +42,14 @@ InversionSlipGradients inversion_slip_gradients(const VehicleParameters& vehicle
           std::min(vehicle.rear_slip_gradient(), most)};
 }
 
+LoadTransfer inversion_load_transfer(const VehicleParameters& vehicle) noexcept {
+  // Fz_f = m (g lr - a_x h) / L = Fz_f0 (1 - a_x h / (g lr)); Fz_r likewise with + and lf
+  // (VehicleParameters::front_axle_load_n).
+  const double height_per_g = vehicle.cg_height_m / vehicle.gravity_mps2;
+  return {std::min(height_per_g / vehicle.cg_to_rear_axle_m, 1.0),
+          std::min(height_per_g / vehicle.cg_to_front_axle_m, 1.0)};
+}
+
 SpeedCompensation speed_compensation(const VehicleParameters& vehicle,
                                      double actuator_group_delay_s, const PathDemand& path) {
   const InversionSlipGradients gradients = inversion_slip_gradients(vehicle);
@@ -66,6 +74,9 @@ ControllerParameters steering_system_controller(const VehicleDescription& car,
   const InversionSlipGradients gradients = inversion_slip_gradients(vehicle);
   p.single_track.rear_slip_gradient_s2pm = options.slip_preview ? gradients.rear_s2pm : 0.0;
   p.single_track.front_slip_gradient_s2pm = options.slip_preview ? gradients.front_s2pm : 0.0;
+  const LoadTransfer transfer = inversion_load_transfer(vehicle);
+  p.single_track.front_load_transfer_s2pm = options.slip_preview ? transfer.front_s2pm : 0.0;
+  p.single_track.rear_load_transfer_s2pm = options.slip_preview ? transfer.rear_s2pm : 0.0;
   p.friction_guard.max_lateral_acceleration_mps2 = options.friction_guard
                                                        ? vehicle.friction_limit_mps2()
                                                        : std::numeric_limits<double>::infinity();

@@ -122,8 +122,8 @@ VehicleState DynamicSingleTrack::derivative(const VehicleState& s, double delta,
   double dr = 0.0;
   if (w > 0.0) {
     const SlipAngles alpha = slip_angles(s, delta);
-    const double fy_front = lateral_force(p.front_tire, alpha.front_rad, p.front_axle_load_n());
-    const double fy_rear = lateral_force(p.rear_tire, alpha.rear_rad, p.rear_axle_load_n());
+    const double fy_front = lateral_force(p.front_tire, alpha.front_rad, p.front_axle_load_n(ax));
+    const double fy_rear = lateral_force(p.rear_tire, alpha.rear_rad, p.rear_axle_load_n(ax));
     const double cos_delta = std::cos(delta);
     // m (dvy/dt + vx r) = Fy_r + Fy_f cos(delta);  Iz dr/dt = lf Fy_f cos(delta) - lr Fy_r
     dvy += w * ((fy_rear + fy_front * cos_delta) / p.mass_kg - s.vx_mps * s.yaw_rate_radps);

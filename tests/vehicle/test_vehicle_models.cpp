@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "smoothsteer/sim/simulation.hpp"
@@ -120,6 +121,33 @@ TEST(DynamicSingleTrack, BlendsToKinematicAtLowSpeed) {
   EXPECT_NEAR(a.heading_rad, b.heading_rad, 1e-12);
   EXPECT_NEAR(a.vy_mps, 0.0, 1e-12);
   EXPECT_NEAR(a.yaw_rate_radps, 0.0, 1e-12);
+}
+
+// Rajamani eqs. 4.17-4.18 without aerodynamics and grade: Fz_f = m (g lr - a_x h) / L,
+// Fz_r = m (g lf + a_x h) / L; their sum stays the weight while neither reaches 0.
+TEST(VehicleParameters, AxleLoadsShiftWithTheLongitudinalAcceleration) {
+  for (int k = 0; k < property_cases(40); ++k) {
+    const auto seed = case_seed(k);
+    Random random(seed);
+    VehicleParameters car;
+    car.mass_kg = random.uniform(500.0, 3000.0);
+    car.cg_to_front_axle_m = random.uniform(0.8, 2.0);
+    car.cg_to_rear_axle_m = random.uniform(0.8, 2.0);
+    car.cg_height_m = random.uniform(0.0, 1.2);
+    const double ax = random.uniform(-10.0, 10.0);
+    const double L = car.wheelbase_m(), m = car.mass_kg, g = car.gravity_mps2;
+    const double front = m * (g * car.cg_to_rear_axle_m - ax * car.cg_height_m) / L;
+    const double rear = m * (g * car.cg_to_front_axle_m + ax * car.cg_height_m) / L;
+    EXPECT_NEAR(car.front_axle_load_n(ax), std::max(0.0, front), 1e-9 * m * g) << seed_message(seed);
+    EXPECT_NEAR(car.rear_axle_load_n(ax), std::max(0.0, rear), 1e-9 * m * g) << seed_message(seed);
+    if (front > 0.0 && rear > 0.0) {
+      EXPECT_NEAR(car.front_axle_load_n(ax) + car.rear_axle_load_n(ax), m * g, 1e-9 * m * g)
+          << seed_message(seed);
+    }
+  }
+  const VehicleParameters car;
+  EXPECT_EQ(car.front_axle_load_n(0.0), car.front_axle_load_n());
+  EXPECT_EQ(car.front_axle_load_n(1e4), 0.0);  // a wheelie: the front axle lifts
 }
 
 TEST(VehicleParameters, ValidationNamesFieldValueAndRule) {

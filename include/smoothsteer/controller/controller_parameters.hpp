@@ -182,10 +182,18 @@ struct DelayCompensation {
 //! second-order correction, g = 1 + (K_f - K_r) v^2 / L, d = (K_f + K_r) v^2 / g, reading the
 //! path d + preview_time_s |v| metres further ahead. The result still passes the clamp to
 //! +-kbar_ff and the rate limit L_ff, so the certificate holds unchanged.
+//! Braking moves load from the rear axle to the front one (accelerating the other way), and a
+//! tire's cornering stiffness grows with its load, so the slip gradients follow the measured
+//! longitudinal acceleration a_x: K_f / (1 - a_x t_f) and K_r / (1 + a_x t_r), with the load
+//! transfer coefficients t_f = h / (g lr), t_r = h / (g lf) (docs/vehicle_dynamics.md, section 3).
 struct SingleTrackInversion {
   bool enabled = false;
   double rear_slip_gradient_s2pm = 0.0;   //!< K_r [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
   double front_slip_gradient_s2pm = 0.0;  //!< K_f [rad / (m/s^2)] = [s^2/m], in [0, 0.1]
+  //! t_f [s^2/m], in [0, 1]: the front axle's share of load lost per m/s^2 of acceleration.
+  double front_load_transfer_s2pm = 0.0;
+  //! t_r [s^2/m], in [0, 1]: the rear axle's share of load gained per m/s^2 of acceleration.
+  double rear_load_transfer_s2pm = 0.0;
   double preview_time_s = 0.0;            //!< [s], in [0, max_actuator_delay_s]
   //! With the second-order term K_f K_r v^4 kappa'' of the inversion (true), or only its
   //! preview and gain (false). Near the friction limit the linear model over-corrects with it.

@@ -19,10 +19,22 @@ struct DynamicsInversion {
   //! preview_m that the model asks for) [m].
   double slip_lag_m = 0.0;
 
+  //! The least share of its static load an axle is taken to keep under longitudinal
+  //! acceleration: the slip gradient grows at most 4 times (a wheel lifting off is beyond the
+  //! linear model anyway).
+  static constexpr double min_load_share = 0.25;
+
+  //! acceleration_mps2: the measured dv/dt (ControllerInput::acceleration_mps2).
   void update(const SingleTrackInversion& inversion, double speed_magnitude,
-              double vehicle_wheelbase_m) noexcept {
-    const double rear = inversion.enabled ? inversion.rear_slip_gradient_s2pm : 0.0;
-    const double front = inversion.enabled ? inversion.front_slip_gradient_s2pm : 0.0;
+              double vehicle_wheelbase_m, double acceleration_mps2) noexcept {
+    // An axle's slip gradient is inversely proportional to its load (cornering stiffness
+    // B C mu Fz, the Magic Formula's slope at zero slip).
+    const double front_load =
+        std::max(min_load_share, 1.0 - acceleration_mps2 * inversion.front_load_transfer_s2pm);
+    const double rear_load =
+        std::max(min_load_share, 1.0 + acceleration_mps2 * inversion.rear_load_transfer_s2pm);
+    const double rear = inversion.enabled ? inversion.rear_slip_gradient_s2pm / rear_load : 0.0;
+    const double front = inversion.enabled ? inversion.front_slip_gradient_s2pm / front_load : 0.0;
     const double preview_s = inversion.enabled ? inversion.preview_time_s : 0.0;
     const double v2 = speed_magnitude * speed_magnitude;
     const double lag = (front + rear) * v2;  // L (K_f + K_r) v^2 kappa' / L

@@ -94,6 +94,15 @@ struct InversionSlipGradients {
 };
 InversionSlipGradients inversion_slip_gradients(const VehicleParameters& vehicle) noexcept;
 
+//! The load transfer coefficients the single-track inversion scales its slip gradients with
+//! (SingleTrackInversion): t_f = h / (g lr) and t_r = h / (g lf) of the vehicle file, each at
+//! most 1 s^2/m.
+struct LoadTransfer {
+  double front_s2pm = 0.0;  //!< t_f [s^2/m]
+  double rear_s2pm = 0.0;   //!< t_r [s^2/m]
+};
+LoadTransfer inversion_load_transfer(const VehicleParameters& vehicle) noexcept;
+
 //! The delay and catch-up over speed (speed_compensation.hpp) of `vehicle` on a path of demand
 //! `path` (path_demand.hpp): t_act = `actuator_group_delay_s`, the inversion's slip gradients,
 //! the path's largest curvature as kappa_d and the tires' mu g.

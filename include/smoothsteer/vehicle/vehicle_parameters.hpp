@@ -4,6 +4,7 @@
 //! Magic Formula lateral tire (paper_notes §9; Rajamani, Vehicle Dynamics and Control, ch. 2, 13).
 //! Defaults: CommonRoad vehicle models, "vehicle 2" (BMW 320i), see vehicles/passenger_car.yaml.
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <string>
@@ -51,8 +52,9 @@ struct VehicleParameters {
   double yaw_inertia_kgm2 = 1791.6;   //!< Iz [kg m^2]
   double cg_to_front_axle_m = 1.156;  //!< lf [m]
   double cg_to_rear_axle_m = 1.422;   //!< lr [m]
-  double cg_height_m = 0.614;  //!< h [m]; the single-track models do not use it, the double-track
-                               //!< model rolls and pitches the load about it
+  //! h [m]: the axle loads shift with the longitudinal acceleration about it (both kinetic
+  //! models); the double-track model also rolls about it.
+  double cg_height_m = 0.614;
   double gravity_mps2 = 9.81;  //!< g [m/s^2]
   TireParameters front_tire;   //!< lumped front axle
   TireParameters rear_tire;    //!< lumped rear axle
@@ -72,12 +74,21 @@ struct VehicleParameters {
   std::optional<DoubleTrackParameters> double_track;
 
   double wheelbase_m() const noexcept { return cg_to_front_axle_m + cg_to_rear_axle_m; }
-  //! Static axle loads Fz_f = m g lr / L and Fz_r = m g lf / L [N].
-  double front_axle_load_n() const noexcept {
-    return mass_kg * gravity_mps2 * cg_to_rear_axle_m / wheelbase_m();
+  //! Axle loads at longitudinal acceleration a_x [N]: the static Fz_f = m g lr / L and
+  //! Fz_r = m g lf / L, shifted by the pitch moment m a_x h / L (Rajamani, Vehicle Dynamics and
+  //! Control, eqs. 4.17-4.18, with the aerodynamic and grade terms left out; CommonRoad's
+  //! single-track model does the same). Never below 0.
+  double front_axle_load_n(double longitudinal_acceleration_mps2 = 0.0) const noexcept {
+    return std::max(0.0, mass_kg * gravity_mps2 * cg_to_rear_axle_m / wheelbase_m() -
+                             longitudinal_load_shift_n(longitudinal_acceleration_mps2));
   }
-  double rear_axle_load_n() const noexcept {
-    return mass_kg * gravity_mps2 * cg_to_front_axle_m / wheelbase_m();
+  double rear_axle_load_n(double longitudinal_acceleration_mps2 = 0.0) const noexcept {
+    return std::max(0.0, mass_kg * gravity_mps2 * cg_to_front_axle_m / wheelbase_m() +
+                             longitudinal_load_shift_n(longitudinal_acceleration_mps2));
+  }
+  //! m a_x h / L [N]: the load the rear axle gains from the front one under acceleration a_x.
+  double longitudinal_load_shift_n(double longitudinal_acceleration_mps2) const noexcept {
+    return mass_kg * longitudinal_acceleration_mps2 * cg_height_m / wheelbase_m();
   }
   //! Understeer gradient of the linearized model, K = m/L (lr/Cf - lf/Cr) [rad s^2/m], with the
   //! axle cornering stiffnesses Cf, Cr = B C D (Rajamani eq. 3.23 written per axle).
