@@ -1,9 +1,9 @@
 // The single-track inversion under longitudinal acceleration (SingleTrackInversion, load
-// transfer): braking moves load to the front axle, whose cornering stiffness grows with it, and
-// the car turns more for the same steering. The inversion's gain, built from the vehicle file
-// (inversion_slip_gradients, inversion_load_transfer), must predict the steering the Magic
-// Formula plant (DynamicSingleTrack, axle loads at a_x) needs for a rear-axle course curvature,
-// in the tires' linear range, while braking and accelerating.
+// transfer, speed term): braking moves load to the front axle, whose cornering stiffness grows
+// with it, and shrinks the rear axle's slip on a given curvature; the car turns more for the same
+// steering. The inversion's gain, built from the vehicle file (inversion_slip_gradients,
+// inversion_load_transfer), must hold the Magic Formula plant (DynamicSingleTrack, axle loads at
+// a_x) on a curvature, in the tires' linear range, while it brakes and accelerates.
 
 #include <gtest/gtest.h>
 
@@ -22,35 +22,42 @@ using testing::property_cases;
 using testing::Random;
 using testing::seed_message;
 
-//! The plant's lateral steady state at speed v and steering delta with the axle loads of a_x
-//! (the speed held: only vy and r are integrated, RK4), as the rear axle's course curvature.
-double plant_rear_course_curvature(const VehicleParameters& car, double v, double delta,
-                                   double ax) {
-  const DynamicSingleTrack model(car);
-  VehicleState s;
-  s.vx_mps = v;
-  const double dt = 1e-3;
-  const auto rates = [&](const VehicleState& at) { return model.derivative(at, delta, ax); };
-  for (int i = 0; i < 20000; ++i) {
-    const VehicleState k1 = rates(s);
-    VehicleState m = s;
-    m.vy_mps = s.vy_mps + 0.5 * dt * k1.vy_mps;
-    m.yaw_rate_radps = s.yaw_rate_radps + 0.5 * dt * k1.yaw_rate_radps;
-    const VehicleState k2 = rates(m);
-    m.vy_mps = s.vy_mps + 0.5 * dt * k2.vy_mps;
-    m.yaw_rate_radps = s.yaw_rate_radps + 0.5 * dt * k2.yaw_rate_radps;
-    const VehicleState k3 = rates(m);
-    m.vy_mps = s.vy_mps + dt * k3.vy_mps;
-    m.yaw_rate_radps = s.yaw_rate_radps + dt * k3.yaw_rate_radps;
-    const VehicleState k4 = rates(m);
-    s.vy_mps += dt / 6.0 * (k1.vy_mps + 2.0 * k2.vy_mps + 2.0 * k3.vy_mps + k4.vy_mps);
-    s.yaw_rate_radps += dt / 6.0 * (k1.yaw_rate_radps + 2.0 * k2.yaw_rate_radps +
-                                    2.0 * k3.yaw_rate_radps + k4.yaw_rate_radps);
-  }
-  // In the steady state the rear axle's velocity keeps its angle to the body: its course turns
-  // at the yaw rate.
-  const double rear_lateral = s.vy_mps - car.cg_to_rear_axle_m * s.yaw_rate_radps;
-  return s.yaw_rate_radps / std::hypot(v, rear_lateral);
+//! The plant's state after one RK4 step of dt with steering delta and acceleration ax.
+VehicleState rk4_step(const DynamicSingleTrack& model, const VehicleState& s, double delta,
+                      double ax, double dt) {
+  const auto at = [&](const VehicleState& base, const VehicleState& rate, double h) {
+    VehicleState x = base;
+    x.x_m += h * rate.x_m;
+    x.y_m += h * rate.y_m;
+    x.heading_rad += h * rate.heading_rad;
+    x.vx_mps += h * rate.vx_mps;
+    x.vy_mps += h * rate.vy_mps;
+    x.yaw_rate_radps += h * rate.yaw_rate_radps;
+    return x;
+  };
+  const VehicleState k1 = model.derivative(s, delta, ax);
+  const VehicleState k2 = model.derivative(at(s, k1, 0.5 * dt), delta, ax);
+  const VehicleState k3 = model.derivative(at(s, k2, 0.5 * dt), delta, ax);
+  const VehicleState k4 = model.derivative(at(s, k3, dt), delta, ax);
+  VehicleState next = s;
+  next.x_m += dt / 6.0 * (k1.x_m + 2.0 * k2.x_m + 2.0 * k3.x_m + k4.x_m);
+  next.y_m += dt / 6.0 * (k1.y_m + 2.0 * k2.y_m + 2.0 * k3.y_m + k4.y_m);
+  next.heading_rad +=
+      dt / 6.0 * (k1.heading_rad + 2.0 * k2.heading_rad + 2.0 * k3.heading_rad + k4.heading_rad);
+  next.vx_mps += dt / 6.0 * (k1.vx_mps + 2.0 * k2.vx_mps + 2.0 * k3.vx_mps + k4.vx_mps);
+  next.vy_mps += dt / 6.0 * (k1.vy_mps + 2.0 * k2.vy_mps + 2.0 * k3.vy_mps + k4.vy_mps);
+  next.yaw_rate_radps += dt / 6.0 * (k1.yaw_rate_radps + 2.0 * k2.yaw_rate_radps +
+                                     2.0 * k3.yaw_rate_radps + k4.yaw_rate_radps);
+  return next;
+}
+
+//! The rear axle's course angle and speed: the direction and magnitude of its velocity.
+struct RearCourse {
+  double angle_rad, speed_mps;
+};
+RearCourse rear_course(const VehicleParameters& car, const VehicleState& s) {
+  const double lateral = s.vy_mps - car.cg_to_rear_axle_m * s.yaw_rate_radps;
+  return {s.heading_rad + std::atan2(lateral, s.vx_mps), std::hypot(s.vx_mps, lateral)};
 }
 
 SingleTrackInversion inversion_of(const VehicleParameters& car, bool load_transfer) {
@@ -63,36 +70,66 @@ SingleTrackInversion inversion_of(const VehicleParameters& car, bool load_transf
           .rear_load_transfer_s2pm = transfer.rear_s2pm};
 }
 
-TEST(LoadTransferInversion, GainPredictsThePlantsSteeringWhileBrakingAndAccelerating) {
+// Open loop on a circle: the steering the inversion asks for a constant rear-axle curvature,
+// atan(L g kappa), at every instant of a speed ramp. The plant's rear axle must then keep that
+// curvature while the car brakes or accelerates (the axle loads shift and the rear slip changes
+// with the speed) to within 3 % (the slip's lag behind the ramp is the rest: 1-2.3 % over 40
+// cases). Without the speed term 2 K_r a the worst case of a car leaves it by 1.8-7 %, without
+// the load transfer by 6-150 %.
+TEST(LoadTransferInversion, HoldsTheCurvatureWhileBrakingAndAccelerating) {
+  const double dt = 1e-3;
   int checked = 0;
-  for (int k = 0; k < property_cases(24); ++k) {
+  for (int k = 0; k < property_cases(16); ++k) {
     const auto seed = case_seed(k);
     Random random(seed);
     VehicleParameters car;
     car.mass_kg = random.uniform(900.0, 2500.0);
-    car.yaw_inertia_kgm2 = car.mass_kg * random.uniform(1.2, 2.0);
     car.cg_to_front_axle_m = random.uniform(1.0, 1.6);
     car.cg_to_rear_axle_m = random.uniform(1.0, 1.6);
+    // The inversion's model: the yaw inertia of two point masses on the axles, m lf lr
+    // (docs/vehicle_dynamics.md, section 3; the shipped car's is within 0.3 % of it).
+    car.yaw_inertia_kgm2 = car.mass_kg * car.cg_to_front_axle_m * car.cg_to_rear_axle_m;
     car.cg_height_m = random.uniform(0.4, 1.0);
-    car.front_tire.stiffness_factor_b = random.uniform(10.0, 20.0);
-    car.rear_tire.stiffness_factor_b = random.uniform(10.0, 20.0);
-    const double v = random.uniform(8.0, 30.0);
-    const double ax = random.uniform(-4.0, 3.0);
+    car.front_tire.stiffness_factor_b = random.uniform(12.0, 20.0);
+    car.rear_tire.stiffness_factor_b = random.uniform(12.0, 20.0);
+    const bool braking = random.coin();
+    const double ax = braking ? random.uniform(-5.0, -2.0) : random.uniform(1.5, 3.0);
+    const double start_speed = braking ? random.uniform(22.0, 30.0) : random.uniform(8.0, 12.0);
+    const double ramp_s = braking ? (start_speed - 10.0) / -ax : 10.0 / ax;
+    // Lateral acceleration at most 0.4 m/s^2: the Magic Formula's linear range.
+    const double curvature = 0.4 / std::pow(std::max(start_speed, start_speed + ax * ramp_s), 2);
+    const DynamicSingleTrack model(car);
+    const SingleTrackInversion inversion = inversion_of(car, true);
     const double wheelbase = car.wheelbase_m();
-    DynamicsInversion inversion;
-    inversion.update(inversion_of(car, true), v, wheelbase, ax);
-    // Far from the oversteer critical speed and from the gain's floor of 0.5.
-    if (inversion.gain < 0.7) continue;
+    DynamicsInversion at_start, at_end;
+    at_start.update(inversion, start_speed, wheelbase, ax);
+    at_end.update(inversion, start_speed + ax * ramp_s, wheelbase, ax);
+    // Far from the oversteer critical speed and the gain's floor of 0.5.
+    if (std::min(at_start.gain, at_end.gain) < 0.7) continue;
     ++checked;
-    // Lateral acceleration about 0.3 m/s^2: the Magic Formula's linear range.
-    const double delta = 0.3 * wheelbase * inversion.gain / (v * v);
-    const double curvature = plant_rear_course_curvature(car, v, delta, ax);
-    const double predicted = std::atan(wheelbase * inversion.gain * curvature);
-    EXPECT_NEAR(predicted / delta, 1.0, 0.02)
-        << seed_message(seed) << " v = " << v << " a_x = " << ax << " h = " << car.cg_height_m
-        << " gain = " << inversion.gain;
+    VehicleState s;
+    s.vx_mps = start_speed;
+    double worst = 0.0;
+    const int settle = 3000, ramp = static_cast<int>(ramp_s / dt);
+    for (int i = 0; i < settle + ramp; ++i) {
+      const double a = i < settle ? 0.0 : ax;
+      DynamicsInversion steady;
+      steady.update(inversion, s.vx_mps, wheelbase, a);
+      const double delta = std::atan(wheelbase * steady.gain * curvature);
+      const RearCourse before = rear_course(car, s);
+      s = rk4_step(model, s, delta, a, dt);
+      const RearCourse after = rear_course(car, s);
+      // The first second of the ramp is the slip's transient after the step in acceleration.
+      if (i >= settle + 1000) {
+        const double turned = (after.angle_rad - before.angle_rad) /
+                              (0.5 * (before.speed_mps + after.speed_mps) * dt);
+        worst = std::max(worst, std::abs(turned / curvature - 1.0));
+      }
+    }
+    EXPECT_LT(worst, 0.03) << seed_message(seed) << " a_x = " << ax << " from " << start_speed
+                           << " m/s, h = " << car.cg_height_m;
   }
-  EXPECT_GT(checked, property_cases(24) / 2);
+  EXPECT_GT(checked, property_cases(16) / 2);
 }
 
 TEST(LoadTransferInversion, WithoutAccelerationTheGainIsTheStaticOne) {
@@ -114,12 +151,14 @@ TEST(LoadTransferInversion, AnAxleKeepsAQuarterOfItsLoad) {
   const SingleTrackInversion inversion = inversion_of(car, true);
   const double v = 20.0, wheelbase = car.wheelbase_m();
   // Accelerating at 1e4 m/s^2 (the input range's bound) would unload the front axle completely
-  // and load the rear one 500 times: the front slip gradient stops at 4 K_f, the rear one is
-  // nearly 0.
+  // and load the rear one 500 times: the front slip gradient stops at 4 K_f, the rear one
+  // K_r / (1 + a t_r) nearly vanishes, and its speed term 2 K_r a / (1 + a t_r) tends to
+  // 2 K_r / t_r.
   DynamicsInversion hard;
   hard.update(inversion, v, wheelbase, 1e4);
-  EXPECT_NEAR(hard.gain,
-              1.0 + 4.0 * inversion.front_slip_gradient_s2pm * v * v / wheelbase, 2e-3);
+  const double limit = 1.0 + 4.0 * inversion.front_slip_gradient_s2pm * v * v / wheelbase +
+                       2.0 * inversion.rear_slip_gradient_s2pm / inversion.rear_load_transfer_s2pm;
+  EXPECT_NEAR(hard.gain, limit, 3e-3);
 }
 
 }  // namespace

@@ -6,13 +6,15 @@
 //! bend_m2 kappa''; off, that is kappa(s) itself.
 
 #include <algorithm>
+#include <cmath>
 
 #include "smoothsteer/controller/controller_parameters.hpp"
 
 namespace smoothsteer {
 
 struct DynamicsInversion {
-  double gain = 1.0;       //!< g = 1 + (K_f - K_r) v^2 / L, at least 0.5
+  //! g = 1 + (K_f - K_r) v^2 / L + 2 K_r d|v|/dt, at least 0.5
+  double gain = 1.0;
   double bend_m2 = 0.0;    //!< the second-order term's weight on kappa'' [m^2]
   double preview_m = 0.0;  //!< how far ahead the feedforward reads the path [m]
   //! (K_f + K_r) v^2 / g: how far the tires' slip lags the chain's curvature (the part of
@@ -24,9 +26,11 @@ struct DynamicsInversion {
   //! linear model anyway).
   static constexpr double min_load_share = 0.25;
 
-  //! acceleration_mps2: the measured dv/dt (ControllerInput::acceleration_mps2).
-  void update(const SingleTrackInversion& inversion, double speed_magnitude,
-              double vehicle_wheelbase_m, double acceleration_mps2) noexcept {
+  //! speed_mps: the signed speed v; acceleration_mps2: the measured dv/dt
+  //! (ControllerInput::acceleration_mps2).
+  void update(const SingleTrackInversion& inversion, double speed_mps, double vehicle_wheelbase_m,
+              double acceleration_mps2) noexcept {
+    const double speed_magnitude = std::abs(speed_mps);
     // An axle's slip gradient is inversely proportional to its load (cornering stiffness
     // B C mu Fz, the Magic Formula's slope at zero slip).
     const double front_load =
@@ -38,7 +42,14 @@ struct DynamicsInversion {
     const double preview_s = inversion.enabled ? inversion.preview_time_s : 0.0;
     const double v2 = speed_magnitude * speed_magnitude;
     const double lag = (front + rear) * v2;  // L (K_f + K_r) v^2 kappa' / L
-    gain = std::max(0.5, 1.0 + (front - rear) * v2 / vehicle_wheelbase_m);
+    // As the speed changes, so does the rear axle's slip -K_r v^2 kappa on a given curvature:
+    // the heading turns by d(K_r v^2 kappa)/dt more than the course, which adds 2 K_r a kappa to
+    // the stationary steering per wheelbase, a = d|v|/dt (docs/vehicle_dynamics.md, section 3).
+    const double speed_change = speed_mps > 0.0   ? acceleration_mps2
+                                : speed_mps < 0.0 ? -acceleration_mps2
+                                                  : 0.0;
+    gain = std::max(0.5, 1.0 + (front - rear) * v2 / vehicle_wheelbase_m +
+                             2.0 * rear * speed_change);
     slip_lag_m = lag / gain;
     preview_m = preview_s * speed_magnitude + slip_lag_m;
     // g kappa(s + d) carries lag^2 / (2 g) kappa''; the model asks K_f K_r v^4 kappa''.
