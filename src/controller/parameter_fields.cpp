@@ -248,12 +248,13 @@ const std::array fields{
     G::governor, false, ScenarioKey::derived, "the vehicle file's mu g",
     SMOOTHSTEER_GET(governor.max_lateral_acceleration_mps2),
     SMOOTHSTEER_SET(governor.max_lateral_acceleration_mps2)},
-  ParameterField{"governor.certified_switching_bound", "governor.certified_switching_bound",
-    K::real, any(), "1/m", "",
-    "kbar_sw of the split certificate, kept by the near-path law; 0 = the parameters' own", "",
-    G::governor, false, ScenarioKey::derived, "none, `governed_parameters()` sets it",
-    SMOOTHSTEER_GET(governor.certified_switching_bound),
-    SMOOTHSTEER_SET(governor.certified_switching_bound)},
+  ParameterField{"governor.near_law_switching_bound", "governor.near_law_switching_bound",
+    K::real, left_open(0, inf), "1/m", "",
+    "the near-path law's authority: it steers with min(this, kbar_sw); +inf = the whole kbar_sw",
+    "", G::governor, false, ScenarioKey::derived,
+    "none, `governed_parameters()` lowers it to the certified kbar_sw",
+    SMOOTHSTEER_GET(governor.near_law_switching_bound),
+    SMOOTHSTEER_SET(governor.near_law_switching_bound)},
 };
 // clang-format on
 

@@ -86,13 +86,17 @@ struct SteeringGovernor {
   //! lane change leaves; smaller shares cost the 15 m/s lane change (0.02: 0.030 -> 0.042 m) or
   //! the 19 m/s one with a mis-set slip observer (0.03: 0.32 -> 0.46 m) (docs/governor.md).
   static constexpr double far_law_slip_lag_share = 0.05;
-  //! What governed_parameters() derives the authority from (steering_governor.hpp): the car's
-  //! steering angle limit [rad] and friction limit mu g [m/s^2]; +inf = none.
+  //! The car's steering angle limit [rad] and friction limit mu g [m/s^2], +inf = none: what
+  //! governed_parameters() widens kbar_n to (steering_governor.hpp). The angle is also the one
+  //! a reset refuses beyond (LeadWheelController::reset) and the one the steering system's offset
+  //! compensation keeps (car_steering_limits()), with R and A above.
   double max_steering_angle_rad = std::numeric_limits<double>::infinity();
   double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();
-  //! The switching authority the split certificate gave before governed_parameters() widened
-  //! it [1/m]; the near-path law keeps it (docs/governor.md). 0 = the parameters' own kbar_sw.
-  double certified_switching_bound = 0.0;
+  //! The near-path law's authority [1/m]: near the path the law steers with
+  //! min(this, kbar_sw), so that a widened kbar_n does not stiffen the tracking the split
+  //! certificate tuned (docs/governor.md, section 4). governed_parameters() lowers it to the
+  //! certified kbar_sw before it widens kbar_n; +inf = the whole kbar_sw.
+  double near_law_switching_bound = std::numeric_limits<double>::infinity();
 };
 
 //! Largest supported chain length. Fixed-size storage keeps update() allocation free.
