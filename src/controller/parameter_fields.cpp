@@ -67,9 +67,6 @@ constexpr FieldRange left_open(double min, double max) noexcept {
 constexpr FieldRange positive() noexcept {
   return {{0.0, inf, true, true}};
 }
-constexpr FieldRange any() noexcept {
-  return {{-inf, inf, false, false}};
-}
 
 using K = FieldKind;
 using G = ParameterGroup;
@@ -221,6 +218,19 @@ const std::array fields{
     false, ScenarioKey::derived, "the vehicle file's max_steering_acceleration_radps2",
     SMOOTHSTEER_GET(governor.max_steering_acceleration_radps2),
     SMOOTHSTEER_SET(governor.max_steering_acceleration_radps2)},
+  ParameterField{"governor.max_steering_angle_rad", "governor.max_steering_angle_rad", K::real,
+    {{0.0, inf, true, true}, inf}, "rad", " (+inf: none)", "the car's angle limit: kbar_n widens to what it allows (`governed_parameters()`), and a "
+    "reset refuses an angle beyond it", "",
+    G::governor, false, ScenarioKey::derived, "the vehicle file's max_steering_angle_rad",
+    SMOOTHSTEER_GET(governor.max_steering_angle_rad),
+    SMOOTHSTEER_SET(governor.max_steering_angle_rad)},
+  ParameterField{"governor.max_lateral_acceleration_mps2", "governor.max_lateral_acceleration_mps2",
+    K::real, {{0.0, inf, true, true}, inf}, "m/s^2", " (+inf: none)",
+    "the car's friction limit mu g: kbar_n widens to what it allows at the speed "
+    "(`governed_parameters()`)", "",
+    G::governor, false, ScenarioKey::derived, "the vehicle file's mu g",
+    SMOOTHSTEER_GET(governor.max_lateral_acceleration_mps2),
+    SMOOTHSTEER_SET(governor.max_lateral_acceleration_mps2)},
   ParameterField{"governor.max_longitudinal_acceleration_mps2",
     "governor.max_longitudinal_acceleration_mps2", K::real, closed(0, 50), "m/s^2",
     "", "|dv/dt| budgeted beyond the measured one", "", G::governor,
@@ -237,17 +247,6 @@ const std::array fields{
     "", "share of R and A kept for the chain's variation within a sub-step",
     "", G::governor, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.margin), SMOOTHSTEER_SET(governor.margin)},
-  ParameterField{"governor.max_steering_angle_rad", "governor.max_steering_angle_rad", K::real,
-    any(), "rad", "", "angle limit that `governed_parameters()` derives the authority from", "",
-    G::governor, false, ScenarioKey::derived, "the vehicle file's max_steering_angle_rad",
-    SMOOTHSTEER_GET(governor.max_steering_angle_rad),
-    SMOOTHSTEER_SET(governor.max_steering_angle_rad)},
-  ParameterField{"governor.max_lateral_acceleration_mps2", "governor.max_lateral_acceleration_mps2",
-    K::real, any(), "m/s^2", "",
-    "friction limit mu g that `governed_parameters()` derives the authority from", "",
-    G::governor, false, ScenarioKey::derived, "the vehicle file's mu g",
-    SMOOTHSTEER_GET(governor.max_lateral_acceleration_mps2),
-    SMOOTHSTEER_SET(governor.max_lateral_acceleration_mps2)},
   ParameterField{"governor.near_law_switching_bound", "governor.near_law_switching_bound",
     K::real, left_open(0, inf), "1/m", "",
     "the near-path law's authority: it steers with min(this, kbar_sw); +inf = the whole kbar_sw",

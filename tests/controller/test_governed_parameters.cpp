@@ -95,6 +95,24 @@ TEST(GovernedParameters, WithoutTheGovernorTheParametersStayAsTheyAre) {
   EXPECT_EQ(g.governor.near_law_switching_bound, inf);
 }
 
+TEST(GovernedParameters, CarLimitsAreCheckedAsFields) {
+  Random random(case_seed(0) + 4429);
+  const ControllerParameters p = certified(random);
+  for (const double bad : {0.0, -0.5, std::nan("")}) {
+    ControllerParameters angle = p, friction = p;
+    angle.governor.max_steering_angle_rad = bad;
+    friction.governor.max_lateral_acceleration_mps2 = bad;
+    EXPECT_NE(angle.validation_error().find("governor.max_steering_angle_rad"), std::string::npos)
+        << bad;
+    EXPECT_NE(friction.validation_error().find("governor.max_lateral_acceleration_mps2"),
+              std::string::npos)
+        << bad;
+  }
+  ControllerParameters none = p;
+  none.governor.max_steering_angle_rad = none.governor.max_lateral_acceleration_mps2 = inf;
+  EXPECT_TRUE(none.is_valid()) << none.validation_error();
+}
+
 TEST(GovernedParameters, NearLawBoundIsCheckedAsAField) {
   Random random(case_seed(0) + 4427);
   ControllerParameters p = certified(random);
