@@ -2,9 +2,8 @@
 
 #include <array>
 #include <cmath>
-#include <sstream>
-
-#include "smoothsteer/validation.hpp"
+#include <limits>
+#include <numbers>
 
 namespace smoothsteer {
 namespace {
@@ -262,12 +261,6 @@ const std::array fields{
 #undef SMOOTHSTEER_SWITCH
 #undef SMOOTHSTEER_SLIP
 
-std::string number_text(double value) {
-  if (std::isinf(value)) return value > 0 ? "+inf" : "-inf";
-  if (value == std::numbers::pi / 2.0) return "pi/2";
-  return exact_number(value);
-}
-
 }  // namespace
 
 bool FieldRange::contains(double value) const noexcept {
@@ -337,55 +330,6 @@ bool group_enabled(const ControllerParameters& p, ParameterGroup group) noexcept
       break;
   }
   return true;
-}
-
-std::string field_value_text(const ParameterField& field, const ControllerParameters& p) {
-  if (field.kind == FieldKind::wheelbases) {
-    std::string text;
-    for (int i = 0; i < 3; ++i) {
-      text += number_text(p.chain.wheelbases_m[static_cast<std::size_t>(i)]) + ", ";
-    }
-    return text + "...";
-  }
-  const double value = field.get(p);
-  if (field.kind == FieldKind::boolean) return value != 0.0 ? "true" : "false";
-  if (field.kind == FieldKind::choice) {
-    std::istringstream names{std::string(field.choices)};
-    std::string name;
-    for (int k = 0; names >> name; ++k) {
-      if (k == static_cast<int>(value)) return name;
-    }
-    return exact_number(value);
-  }
-  return number_text(value);
-}
-
-std::string field_default_text(const ParameterField& field) {
-  return field_value_text(field, ControllerParameters{});
-}
-
-std::string parameter_table_markdown() {
-  std::string table =
-      "| field (scenario key, Python keyword) | member | default | unit | meaning | rule "
-      "(checked by `validate()`) |\n|---|---|---|---|---|---|\n";
-  auto escape = [](std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-      if (c == '|') out += '\\';
-      out += c;
-    }
-    return out;
-  };
-  for (const ParameterField& field : fields) {
-    std::string doc = escape(field.doc);
-    if (field.scenario == ScenarioKey::derived) {
-      doc += " (scenario files: " + std::string(field.scenario_note) + ")";
-    }
-    table += "| `" + std::string(field.name) + "` | `" + std::string(field.member) + "` | " +
-             field_default_text(field) + " | " + std::string(field.unit) + " | " + doc + " | " +
-             escape(field_rule_text(field)) + " |\n";
-  }
-  return table;
 }
 
 }  // namespace smoothsteer
