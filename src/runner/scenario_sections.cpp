@@ -13,7 +13,6 @@
 namespace smoothsteer::runner::detail {
 using io::ConfigError;
 using io::ConfigSection;
-using io::load_yaml_file;
 using io::Range;
 using io::read_vehicle_section;
 namespace {
@@ -52,7 +51,7 @@ YAML::Node read_vehicle_block(const YAML::Node& node, const std::string& key,
       vehicle_file = std::filesystem::path(source.directory) / vehicle_file;
     YAML::Node from_file;
     try {
-      from_file = load_yaml_file(vehicle_file.string());
+      from_file = source.read_yaml(vehicle_file.string());
     } catch (const ConfigError& error) {
       vehicle_keys.fail("file", error.what());  // names the key that gave the file
     }

@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -18,11 +19,14 @@
 namespace smoothsteer::runner::detail {
 
 //! Where the scenario came from: its file (error messages), the folder relative references are
-//! resolved against, and the keys --set gave (errors say so).
+//! resolved against, the keys --set gave (errors say so), and how its YAML files (the vehicle
+//! files it names) are read: io::load_yaml_file, or a copy of a tree parsed before
+//! (parsed_yaml_files.hpp).
 struct ScenarioSource {
   std::string file;
   std::string directory;
   std::shared_ptr<std::set<std::string>> overridden;
+  std::function<YAML::Node(const std::string&)> read_yaml = io::load_yaml_file;
 };
 
 //! Throws the value's validation error (validation.hpp) as a ConfigError naming the section.
