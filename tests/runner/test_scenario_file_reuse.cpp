@@ -6,7 +6,9 @@
 
 #include <filesystem>
 
+#include "../../src/runner/built_paths.hpp"
 #include "../../src/runner/parsed_yaml_files.hpp"
+#include "../../src/runner/path_demands.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/source_dir.hpp"
@@ -69,7 +71,9 @@ TEST(ScenarioFileReuse, CasesOfOneBaseRunAsFromTheFile) {
        {std::vector<std::string>{"speed.initial_mps=9.5", "start.y_m=0.1",
                                  "simulation.duration_s=4"},
         {"actuator.dead_time_s=0.02", "simulation.noise_seed=7", "simulation.duration_s=4",
-         "vehicle.front_tire.friction_mu=0.8"}}) {
+         "vehicle.front_tire.friction_mu=0.8"},
+        {"path.x_start_m=-35", "simulation.duration_s=4"},  // another path: built anew
+        {"simulation.duration_s=4"}}) {
     const RunResult expected = run_scenario(load_scenario(base, overrides));
     const RunResult actual = run_scenario(load_scenario_reusing_files(base, overrides));
     ASSERT_EQ(expected.simulation.trace.size(), actual.simulation.trace.size());
@@ -82,6 +86,33 @@ TEST(ScenarioFileReuse, CasesOfOneBaseRunAsFromTheFile) {
                 actual.simulation.trace[i].steering_command_rad)
           << i;
     }
+  }
+}
+
+TEST(ScenarioFileReuse, APathIsKeptByEveryKeyValueAndTagOfItsSection) {
+  using detail::BuiltPaths;
+  const auto key = [](const std::string& yaml, const std::string& directory = "scenarios") {
+    return BuiltPaths::key(YAML::Load(yaml), directory);
+  };
+  const std::string section = "{type: straight, length_m: 5}";
+  ASSERT_TRUE(key(section));
+  EXPECT_EQ(key(section), key("type: straight\nlength_m: 5\n"));
+  for (const std::string other :
+       {"{type: straight, length_m: '5'}", "{type: straight, length_m: 5.0}",
+        "{type: straight, length_m: [5]}", "{type: straight}", "{type: circle, length_m: 5}",
+        "{type: straight, length_m: 5, heading_rad: 0}", "{type: straight, length_m: }"}) {
+    EXPECT_NE(key(section), key(other)) << other;
+  }
+  EXPECT_NE(key(section), key(section, "scenarios/roads"));      // relative files
+  EXPECT_FALSE(key("{type: waypoints_csv, file: points.csv}"));  // the file may change
+}
+
+TEST(ScenarioFileReuse, APathsDemandIsItsOwnAlsoAtAReusedAddress) {
+  for (double radius = 5.0; radius < 50.0; radius *= 1.5) {
+    const auto circle = std::make_shared<const Path>(Path::circle({0.0, 0.0}, radius, true, 0.0));
+    const PathDemand expected = path_demand(*circle);
+    EXPECT_EQ(detail::shared_path_demand(circle).max_curvature, expected.max_curvature);
+    EXPECT_EQ(detail::shared_path_demand(circle).max_curvature, 1.0 / radius);
   }
 }
 
@@ -122,6 +153,7 @@ TEST_F(ScenarioFileReuseErrors, AreLoadScenariosMessages) {
       {good, {"controller.k_rob=-1"}},
       {good, {"path.type=circle"}},
       {good, {"vehicle.file=missing.yaml"}},
+      {good, {"path.length_m=-5"}},
       {bad_key, {}},
       {bad_key, {"start.y_m=0.1"}},
       {bad_vehicle, {}},
@@ -137,6 +169,20 @@ TEST_F(ScenarioFileReuseErrors, AreLoadScenariosMessages) {
   }
   // The case a copy alone would get wrong: the file's own key, whose line the message quotes.
   EXPECT_NE(error_of(load_scenario_reusing_files, bad_key, {}).find("(line 4)"), std::string::npos);
+}
+
+// A quoted waypoint coordinate is a string in summary.json's parameters: the kept path of the
+// plain one must not serve it.
+TEST_F(ScenarioFileReuseErrors, APathSectionThatDiffersOnlyInATagIsItsOwn) {
+  const std::string file = write("waypoints.yaml",
+                                 "path: {type: waypoints, points: [[0, 0], [10, 0], [20, 1]]}\n"
+                                 "speed: {initial_mps: 5}\ncontroller: {type: lead_wheel}\n");
+  for (const std::string first : {"0", "'0'", "0", "'0'"}) {
+    SCOPED_TRACE(first);
+    const std::vector<std::string> overrides{"path.points=[[" + first +
+                                             ", 0], [10, 0], [20, 1], [30, 3]]"};
+    expect_same(load_scenario(file, overrides), load_scenario_reusing_files(file, overrides));
+  }
 }
 
 TEST_F(ScenarioFileReuseErrors, AChangedFileIsParsedAgain) {
