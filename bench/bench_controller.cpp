@@ -80,7 +80,7 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
     parameters.governor.max_steering_acceleration_radps2 = 8.0;
     // The shipped scenarios derive the far law's length per sub-step (eq. governed_law_length).
     parameters.governor.law_length_m = law == Law::shipped ? 0.0 : 6.0;
-    parameters.governor.certified_switching_bound = 0.005;
+    parameters.governor.near_law_switching_bound = 0.005;
   }
   if (law == Law::paper) {
     parameters.feedforward.share = 0.0;

@@ -128,13 +128,16 @@ def _overrides(overrides):
     return [str(item) for item in overrides]
 
 
-def load_scenario(file, overrides=None):
+def load_scenario(file, overrides=None, reuse_files=False):
     """Loads a scenario YAML (docs/scenarios.md) with overrides applied.
 
     overrides: a dict {"controller.k_rob": 0.2, ...} or a list of "key=value" strings, the
     same as the CLI's --set. Raises ConfigError naming the file, the key and the rule.
+    reuse_files: parse the scenario file and the vehicle files it names once per process (for
+    many loads of one file with other overrides, docs/campaigns.md); the same result and errors.
     """
-    return _smoothsteer._load_scenario(str(file), _overrides(overrides))
+    load = _smoothsteer._load_scenario_reusing_files if reuse_files else _smoothsteer._load_scenario
+    return load(str(file), _overrides(overrides))
 
 
 def run_scenario(file, overrides=None):

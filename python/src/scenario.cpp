@@ -104,6 +104,8 @@ void bind_scenario(py::module_& m) {
           "'parameters')");
 
   m.def("_load_scenario", &runner::load_scenario, py::arg("file"), py::arg("overrides"));
+  m.def("_load_scenario_reusing_files", &runner::load_scenario_reusing_files, py::arg("file"),
+        py::arg("overrides"));
   m.def("_run_scenario", &run, py::arg("scenario"));
   m.def("scenario_certificate", &certificate, py::arg("scenario"),
         "Certified bounds of a scenario's lead-wheel controller, per metre travelled: a dict "

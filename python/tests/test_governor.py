@@ -76,5 +76,8 @@ def test_governor_equations_from_python():
     assert np.isinf(ss.governed_feedforward_rate(parameters, 0.0))
     widened = ss.governed_parameters(parameters, speed)
     assert widened.chain.lead_curvature_bound >= parameters.chain.lead_curvature_bound
-    assert widened.governor.certified_switching_bound > 0.0
+    # The near law keeps the certified kbar_sw (docs/governor.md, section 4).
+    assert np.isinf(parameters.governor.near_law_switching_bound)
+    assert widened.governor.near_law_switching_bound == pytest.approx(
+        (1.0 - parameters.feedforward.share) * parameters.chain.lead_curvature_bound)
     assert ss.governed_reversal_curvature(parameters, speed) > 0.0

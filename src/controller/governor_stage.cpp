@@ -43,11 +43,8 @@ void GovernorStage::begin_period(const ControllerParameters& parameters,
   previous_speed_ = speed;
   reversal_bound_ = governed_ ? governed_reversal_curvature(parameters, speed) : 0.0;
   heading_decay_ = governed_ ? std::exp(-step_length / SteeringGovernor::far_law_memory_m) : 1.0;
-  // The near-path law's authority: the certified kbar_sw (governed_parameters() keeps it).
   switching_bound_ = parameters.switching_curvature_bound();
-  near_bound_ = governor.certified_switching_bound > 0.0
-                    ? std::min(governor.certified_switching_bound, switching_bound_)
-                    : switching_bound_;
+  near_bound_ = std::min(governor.near_law_switching_bound, switching_bound_);
 }
 
 GovernorStage::Authority GovernorStage::authority(const ControllerParameters& parameters,

@@ -2,9 +2,8 @@
 
 #include <array>
 #include <cmath>
-#include <sstream>
-
-#include "smoothsteer/validation.hpp"
+#include <limits>
+#include <numbers>
 
 namespace smoothsteer {
 namespace {
@@ -66,9 +65,6 @@ constexpr FieldRange left_open(double min, double max) noexcept {
 }
 constexpr FieldRange positive() noexcept {
   return {{0.0, inf, true, true}};
-}
-constexpr FieldRange any() noexcept {
-  return {{-inf, inf, false, false}};
 }
 
 using K = FieldKind;
@@ -235,6 +231,19 @@ const std::array fields{
     false, ScenarioKey::derived, "the vehicle file's max_steering_acceleration_radps2",
     SMOOTHSTEER_GET(governor.max_steering_acceleration_radps2),
     SMOOTHSTEER_SET(governor.max_steering_acceleration_radps2)},
+  ParameterField{"governor.max_steering_angle_rad", "governor.max_steering_angle_rad", K::real,
+    {{0.0, inf, true, true}, inf}, "rad", " (+inf: none)", "the car's angle limit: kbar_n widens to what it allows (`governed_parameters()`), and a "
+    "reset refuses an angle beyond it", "",
+    G::governor, false, ScenarioKey::derived, "the vehicle file's max_steering_angle_rad",
+    SMOOTHSTEER_GET(governor.max_steering_angle_rad),
+    SMOOTHSTEER_SET(governor.max_steering_angle_rad)},
+  ParameterField{"governor.max_lateral_acceleration_mps2", "governor.max_lateral_acceleration_mps2",
+    K::real, {{0.0, inf, true, true}, inf}, "m/s^2", " (+inf: none)",
+    "the car's friction limit mu g: kbar_n widens to what it allows at the speed "
+    "(`governed_parameters()`)", "",
+    G::governor, false, ScenarioKey::derived, "the vehicle file's mu g",
+    SMOOTHSTEER_GET(governor.max_lateral_acceleration_mps2),
+    SMOOTHSTEER_SET(governor.max_lateral_acceleration_mps2)},
   ParameterField{"governor.max_longitudinal_acceleration_mps2",
     "governor.max_longitudinal_acceleration_mps2", K::real, closed(0, 50), "m/s^2",
     "", "|dv/dt| budgeted beyond the measured one", "", G::governor,
@@ -251,23 +260,13 @@ const std::array fields{
     "", "share of R and A kept for the chain's variation within a sub-step",
     "", G::governor, false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.margin), SMOOTHSTEER_SET(governor.margin)},
-  ParameterField{"governor.max_steering_angle_rad", "governor.max_steering_angle_rad", K::real,
-    any(), "rad", "", "angle limit that `governed_parameters()` derives the authority from", "",
-    G::governor, false, ScenarioKey::derived, "the vehicle file's max_steering_angle_rad",
-    SMOOTHSTEER_GET(governor.max_steering_angle_rad),
-    SMOOTHSTEER_SET(governor.max_steering_angle_rad)},
-  ParameterField{"governor.max_lateral_acceleration_mps2", "governor.max_lateral_acceleration_mps2",
-    K::real, any(), "m/s^2", "",
-    "friction limit mu g that `governed_parameters()` derives the authority from", "",
-    G::governor, false, ScenarioKey::derived, "the vehicle file's mu g",
-    SMOOTHSTEER_GET(governor.max_lateral_acceleration_mps2),
-    SMOOTHSTEER_SET(governor.max_lateral_acceleration_mps2)},
-  ParameterField{"governor.certified_switching_bound", "governor.certified_switching_bound",
-    K::real, any(), "1/m", "",
-    "kbar_sw of the split certificate, kept by the near-path law; 0 = the parameters' own", "",
-    G::governor, false, ScenarioKey::derived, "none, `governed_parameters()` sets it",
-    SMOOTHSTEER_GET(governor.certified_switching_bound),
-    SMOOTHSTEER_SET(governor.certified_switching_bound)},
+  ParameterField{"governor.near_law_switching_bound", "governor.near_law_switching_bound",
+    K::real, left_open(0, inf), "1/m", "",
+    "the near-path law's authority: it steers with min(this, kbar_sw); +inf = the whole kbar_sw",
+    "", G::governor, false, ScenarioKey::derived,
+    "none, `governed_parameters()` lowers it to the certified kbar_sw",
+    SMOOTHSTEER_GET(governor.near_law_switching_bound),
+    SMOOTHSTEER_SET(governor.near_law_switching_bound)},
 };
 // clang-format on
 
@@ -275,12 +274,6 @@ const std::array fields{
 #undef SMOOTHSTEER_SET
 #undef SMOOTHSTEER_SWITCH
 #undef SMOOTHSTEER_SLIP
-
-std::string number_text(double value) {
-  if (std::isinf(value)) return value > 0 ? "+inf" : "-inf";
-  if (value == std::numbers::pi / 2.0) return "pi/2";
-  return exact_number(value);
-}
 
 }  // namespace
 
@@ -351,55 +344,6 @@ bool group_enabled(const ControllerParameters& p, ParameterGroup group) noexcept
       break;
   }
   return true;
-}
-
-std::string field_value_text(const ParameterField& field, const ControllerParameters& p) {
-  if (field.kind == FieldKind::wheelbases) {
-    std::string text;
-    for (int i = 0; i < 3; ++i) {
-      text += number_text(p.chain.wheelbases_m[static_cast<std::size_t>(i)]) + ", ";
-    }
-    return text + "...";
-  }
-  const double value = field.get(p);
-  if (field.kind == FieldKind::boolean) return value != 0.0 ? "true" : "false";
-  if (field.kind == FieldKind::choice) {
-    std::istringstream names{std::string(field.choices)};
-    std::string name;
-    for (int k = 0; names >> name; ++k) {
-      if (k == static_cast<int>(value)) return name;
-    }
-    return exact_number(value);
-  }
-  return number_text(value);
-}
-
-std::string field_default_text(const ParameterField& field) {
-  return field_value_text(field, ControllerParameters{});
-}
-
-std::string parameter_table_markdown() {
-  std::string table =
-      "| field (scenario key, Python keyword) | member | default | unit | meaning | rule "
-      "(checked by `validate()`) |\n|---|---|---|---|---|---|\n";
-  auto escape = [](std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-      if (c == '|') out += '\\';
-      out += c;
-    }
-    return out;
-  };
-  for (const ParameterField& field : fields) {
-    std::string doc = escape(field.doc);
-    if (field.scenario == ScenarioKey::derived) {
-      doc += " (scenario files: " + std::string(field.scenario_note) + ")";
-    }
-    table += "| `" + std::string(field.name) + "` | `" + std::string(field.member) + "` | " +
-             field_default_text(field) + " | " + std::string(field.unit) + " | " + doc + " | " +
-             escape(field_rule_text(field)) + " |\n";
-  }
-  return table;
 }
 
 }  // namespace smoothsteer

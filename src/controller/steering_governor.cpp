@@ -199,9 +199,9 @@ ControllerParameters governed_parameters(const ControllerParameters& certified,
                                                   chain_length_squared));
   }
   ControllerParameters p = certified;
-  if (p.governor.certified_switching_bound <= 0.0) {
-    p.governor.certified_switching_bound = certified.switching_curvature_bound();
-  }
+  // The near-path law keeps the certified authority (docs/governor.md, section 4).
+  p.governor.near_law_switching_bound =
+      std::min(governor.near_law_switching_bound, certified.switching_curvature_bound());
   if (std::isfinite(bound) && bound > certified.chain.lead_curvature_bound) {
     const double feedforward =
         std::max(certified.feedforward_curvature_bound(), governed_feedforward_share * bound);

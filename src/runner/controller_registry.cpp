@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "controller_keys.hpp"
+#include "path_demands.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
 #include "smoothsteer/controller/steering_certificate.hpp"
 #include "smoothsteer/io/schedule_files.hpp"
@@ -100,7 +101,7 @@ std::unique_ptr<ScheduledController> make_scheduled_lead_wheel(ConfigSection& c,
   std::optional<SpeedCompensation> compensation;
   if (derived) {
     if (!path) c.fail("derived_compensation", "needs the path (its largest curvature)");
-    compensation = car_speed_compensation(car, path_demand(*path));
+    compensation = car_speed_compensation(car, detail::shared_path_demand(path));
   }
   std::filesystem::path schedule_file = c.required_text("schedule");
   if (schedule_file.is_relative()) {

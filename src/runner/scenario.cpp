@@ -4,9 +4,11 @@
 #include "smoothsteer/runner/scenario.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 
+#include "parsed_yaml_files.hpp"
 #include "scenario_sections.hpp"
 #include "smoothsteer/runner/controller_registry.hpp"
 
@@ -52,12 +54,19 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
   }
 }
 
-Scenario load_scenario(const std::string& file, const std::vector<std::string>& overrides) {
-  YAML::Node root = load_yaml_file(file);
+namespace {
+
+//! load_scenario() with its YAML files read by `read_yaml` and its path from `built_paths`
+//! where it was built before.
+Scenario load_scenario_from(const std::string& file, const std::vector<std::string>& overrides,
+                            const std::function<YAML::Node(const std::string&)>& read_yaml,
+                            detail::BuiltPaths* built_paths) {
+  YAML::Node root = read_yaml(file);
   if (!root.IsMap()) throw ConfigError(file + ": expected a mapping at the top level");
   apply_overrides(root, overrides, file);
   const detail::ScenarioSource source{file, std::filesystem::path(file).parent_path().string(),
-                                      std::make_shared<std::set<std::string>>()};
+                                      std::make_shared<std::set<std::string>>(), read_yaml,
+                                      built_paths};
   for (const std::string& o : overrides) source.overridden->insert(o.substr(0, o.find('=')));
   Scenario s;
   s.file = file;
@@ -89,6 +98,26 @@ Scenario load_scenario(const std::string& file, const std::vector<std::string>& 
   all["controller"] = controller;
   s.parameters = to_json(all);
   return s;
+}
+
+}  // namespace
+
+Scenario load_scenario(const std::string& file, const std::vector<std::string>& overrides) {
+  return load_scenario_from(file, overrides, load_yaml_file, nullptr);
+}
+
+Scenario load_scenario_reusing_files(const std::string& file,
+                                     const std::vector<std::string>& overrides) {
+  try {
+    return load_scenario_from(
+        file, overrides,
+        [](const std::string& yaml_file) { return detail::process_yaml_files().copy(yaml_file); },
+        &detail::process_paths());
+  } catch (...) {
+    // The copies have no marks, so the message may lack the line; the files' own trees have
+    // them, and errors are rare enough to read the files again.
+    return load_scenario(file, overrides);
+  }
 }
 
 std::unique_ptr<VehicleModel> make_vehicle_model(const Scenario& s) {

@@ -13,7 +13,6 @@
 namespace smoothsteer::runner::detail {
 using io::ConfigError;
 using io::ConfigSection;
-using io::load_yaml_file;
 using io::Range;
 using io::read_vehicle_section;
 namespace {
@@ -52,7 +51,7 @@ YAML::Node read_vehicle_block(const YAML::Node& node, const std::string& key,
       vehicle_file = std::filesystem::path(source.directory) / vehicle_file;
     YAML::Node from_file;
     try {
-      from_file = load_yaml_file(vehicle_file.string());
+      from_file = source.read_yaml(vehicle_file.string());
     } catch (const ConfigError& error) {
       vehicle_keys.fail("file", error.what());  // names the key that gave the file
     }
@@ -170,9 +169,18 @@ YAML::Node read_path(ConfigSection& c, const ScenarioSource& source, ConfigSecti
                      const std::optional<CurvatureSpeedLimits>& curvature_limits, Scenario& s) {
   // Required (docs/scenarios.md): a file with only `name:` must not run on defaults.
   if (!c.has("path")) c.fail("path", "is required (e.g. path: {type: straight})");
+  const std::optional<std::string> reuse_key =
+      source.built_paths ? BuiltPaths::key(c.raw("path"), source.directory) : std::nullopt;
+  std::optional<BuiltPath> built = reuse_key ? source.built_paths->find(*reuse_key) : std::nullopt;
   ConfigSection path = c.section("path");
-  s.path = make_path(path, source.directory, &s.plan);
-  path.finish();
+  if (!built) {
+    s.path = make_path(path, source.directory, &s.plan);
+    path.finish();
+    built = BuiltPath{s.path, s.plan, path.resolved()};
+    if (reuse_key) source.built_paths->keep(*reuse_key, *built);
+  }
+  s.path = built->path;
+  s.plan = built->plan;
   if (s.plan && !curvature_limits) {
     speed.fail("profile",
                "must be 'curvature' on a path with gear changes (the car comes to "
@@ -197,7 +205,7 @@ YAML::Node read_path(ConfigSection& c, const ScenarioSource& source, ConfigSecti
       speed.fail("profile", error.what());
     }
   }
-  return path.resolved();
+  return built->resolved;
 }
 
 YAML::Node read_controller(ConfigSection& c, const ScenarioSource& source, Scenario& s) {

@@ -6,11 +6,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
 #include <string>
 
+#include "built_paths.hpp"
 #include "smoothsteer/io/config_section.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/sim/curvature_speed_profile.hpp"
@@ -18,11 +20,16 @@
 namespace smoothsteer::runner::detail {
 
 //! Where the scenario came from: its file (error messages), the folder relative references are
-//! resolved against, and the keys --set gave (errors say so).
+//! resolved against, the keys --set gave (errors say so), how its YAML files (the vehicle
+//! files it names) are read: io::load_yaml_file, or a copy of a tree parsed before
+//! (parsed_yaml_files.hpp), and the paths built before for the same section, if any
+//! (built_paths.hpp).
 struct ScenarioSource {
   std::string file;
   std::string directory;
   std::shared_ptr<std::set<std::string>> overridden;
+  std::function<YAML::Node(const std::string&)> read_yaml = io::load_yaml_file;
+  BuiltPaths* built_paths = nullptr;
 };
 
 //! Throws the value's validation error (validation.hpp) as a ConfigError naming the section.

@@ -35,7 +35,10 @@ ControllerParameters governed(Random& random, int order) {
       random.uniform(1.2, 6.0) * (45.0 * g.max_steering_rate_radps / p.chain.wheelbases_m[0] +
                                   3.0 * g.max_steering_rate_radps);
   g.law_length_m = random.coin() ? random.uniform(2.0, 20.0) : 0.0;
-  g.certified_switching_bound = random.uniform(0.2, 1.0) * p.switching_curvature_bound();
+  // Lowered as governed_parameters() lowers it, or left at its default (the whole kbar_sw).
+  if (random.coin()) {
+    g.near_law_switching_bound = random.uniform(0.2, 1.0) * p.switching_curvature_bound();
+  }
   return p;
 }
 
@@ -121,7 +124,7 @@ TEST(GovernorStage, AuthorityBlendAndClampKeepTheirBounds) {
                            .step_length_m = step_length});
     ASSERT_TRUE(stage.governed());
     const double near_bound =
-        std::min(p.governor.certified_switching_bound, p.switching_curvature_bound());
+        std::min(p.governor.near_law_switching_bound, p.switching_curvature_bound());
     const double lead_bound = p.chain.lead_curvature_bound;
     double rate = 0.0;
     for (int step = 0; step < steps; ++step) {
@@ -190,7 +193,7 @@ TEST(GovernorStage, AnErrorBeyondTheHandOverCallsTheFarLaw) {
     // The heading that zeroes the near law's sliding variable at e: search it by bisection on
     // the sliding variable's sign (it falls as psi rises towards the path for e > 0).
     const double near_bound =
-        std::min(p.governor.certified_switching_bound, p.switching_curvature_bound());
+        std::min(p.governor.near_law_switching_bound, p.switching_curvature_bound());
     double low = -1.5, high = 1.5;
     for (int i = 0; i < 200; ++i) {
       const double mid = 0.5 * (low + high);

@@ -101,7 +101,8 @@ TEST(ParameterFields, RuleTextsAreDerivedFromTheRanges) {
   EXPECT_EQ(rule("surface"), "must be 0 (global) or 1 (paper)");
   EXPECT_EQ(rule("approach_angle_rad"), "must be in (0, pi/2] rad");
   EXPECT_EQ(rule("slip_preview_second_order"), "");
-  EXPECT_EQ(rule("governor.max_steering_angle_rad"), "");
+  EXPECT_EQ(rule("governor.max_steering_angle_rad"), "must be > 0 rad (+inf: none)");
+  EXPECT_EQ(rule("governor.near_law_switching_bound"), "must be > 0 1/m");
 }
 
 TEST(ParameterFields, FlatFieldsSwitchTheirGroup) {

@@ -54,7 +54,7 @@ ControllerParameters random_governed_parameters(Random& random, int order, doubl
   // The near-path law's authority as the split certificate would give it for R at the top
   // speed (its switching share alone: rate ~ |v| lambda_veh 2 kbar / lambda_1^2).
   const double lambda = p.chain.wheelbases_m[0];
-  g.certified_switching_bound = std::min(
+  g.near_law_switching_bound = std::min(
       p.switching_curvature_bound(), random.uniform(0.2, 1.0) * g.max_steering_rate_radps * lambda *
                                          lambda / (2.0 * p.chain.vehicle_wheelbase_m * top_speed));
   return p;

@@ -2,31 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 
 #include "smoothsteer/runner/scenario.hpp"
+#include "support/scratch_directory.hpp"
 #include "support/source_dir.hpp"
 
 namespace smoothsteer::runner {
 namespace {
 
-namespace fs = std::filesystem;
-
 class ScenarioErrors : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() / ("smoothsteer_errors_" + std::to_string(::getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   std::string write(const std::string& name, const std::string& text) {
-    const fs::path file = directory_ / name;
-    std::ofstream(file) << text;
-    return file.string();
+    return scratch_.write(name, text);
   }
   //! Loads and returns the error message ("" if it loaded).
   std::string error_of(const std::string& file, const std::vector<std::string>& overrides = {}) {
@@ -40,7 +28,7 @@ class ScenarioErrors : public ::testing::Test {
   static constexpr const char* valid =
       "name: t\npath: {type: straight}\nspeed: {initial_mps: 5}\ncontroller: {type: lead_wheel}\n";
 
-  fs::path directory_;
+  testing::ScratchDirectory scratch_{"smoothsteer_errors_"};
 };
 
 void expect_contains(const std::string& message, std::initializer_list<std::string> parts) {
@@ -76,7 +64,7 @@ TEST_F(ScenarioErrors, MalformedYamlNamesFileAndLine) {
 }
 
 TEST_F(ScenarioErrors, MissingFile) {
-  expect_contains(error_of((directory_ / "nope.yaml").string()), {"nope.yaml", "cannot open"});
+  expect_contains(error_of(scratch_.file("nope.yaml")), {"nope.yaml", "cannot open"});
 }
 
 TEST_F(ScenarioErrors, UnknownKeysAnywhere) {

@@ -12,8 +12,10 @@
 #include <memory>
 #include <numbers>
 
+#include "smoothsteer/io/schedule_files.hpp"
 #include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/system/steering_system.hpp"
+#include "smoothsteer/tuning/scheduled_controller.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
 #include "support/source_dir.hpp"
 
@@ -103,6 +105,28 @@ TEST(ResetAngle, ALeadWheelControllerRefusesAnglesAtRightAnglesOrBeyond) {
   EXPECT_EQ(system.reset(std::numbers::pi / 2.0), Status::invalid_input);
   EXPECT_EQ(system.reset(-3.0), Status::invalid_input);
   EXPECT_EQ(system.reset(1.5), Status::ok);
+}
+
+TEST(ResetAngle, AScheduledControllerHasTheCarsAngleLimitNotItsSchedules) {
+  // A loaded schedule's vehicle angle is the largest its rows certify (0.93 rad here), not the
+  // car's 1.066 rad: the scheduled controller refuses what its lead-wheel controller refuses.
+  VehicleDescription car;
+  car.vehicle = io::load_vehicle_file(testing::source_file("vehicles/passenger_car.yaml"));
+  const GainSchedule schedule =
+      io::read_schedule_csv(testing::source_file("scenarios/schedules/passenger_car_parking.csv"),
+                            steering_system_controller(car, SteeringSystemOptions{}));
+  const double tuned = schedule.vehicle().max_steering_angle_rad;
+  const double limit = car.vehicle.max_steering_angle_rad;
+  ASSERT_LT(tuned, limit - 0.1);
+  auto path = std::make_shared<const Path>(Path::straight_line({0.0, 0.0}, 0.0, 100.0));
+  ScheduledController scheduled(schedule, path);
+  LeadWheelController alone(scheduled.parameters_at(5.0), path);
+  for (const double angle :
+       {0.0, tuned + 0.05, -(tuned + 0.05), limit, -limit, limit + 0.01, -(limit + 0.01), 1.5}) {
+    const Status expected = std::abs(angle) <= limit ? Status::ok : Status::invalid_input;
+    EXPECT_EQ(scheduled.reset(angle), expected) << "reset(" << angle << ")";
+    EXPECT_EQ(alone.reset(angle), expected) << "reset(" << angle << ")";
+  }
 }
 
 }  // namespace

@@ -57,9 +57,17 @@ enum class CurvaturePreview {
 //! friction limits leave (kbar_n), split between feedforward and switching part along s.
 struct SteeringGovernor {
   bool enabled = false;
+  //! The car's limits, +inf = none. They are run-time inputs: the governor holds R and A on the
+  //! command; governed_parameters() (steering_governor.hpp) widens kbar_n at each retune to what
+  //! the angle and friction limits allow at the speed; a reset refuses an angle beyond the angle
+  //! limit (LeadWheelController::reset, for a ScheduledController too); and the steering
+  //! system's offset compensation keeps angle, R and A (car_steering_limits()).
   double max_steering_rate_radps = std::numeric_limits<double>::infinity();  //!< R [rad/s]
   //! A [rad/s^2]; for order 1 it bounds the change of the rate between sub-steps.
   double max_steering_acceleration_radps2 = std::numeric_limits<double>::infinity();
+  double max_steering_angle_rad = std::numeric_limits<double>::infinity();         //!< [rad]
+  double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();  //!< mu g
+  // The law under the governor.
   //! |dv/dt| [m/s^2] the bound budgets for beyond the measured one (the speed changes between
   //! two control periods enter the held command's second difference as |dv/dt| |rate| / v).
   double max_longitudinal_acceleration_mps2 = 0.0;
@@ -86,13 +94,11 @@ struct SteeringGovernor {
   //! lane change leaves; smaller shares cost the 15 m/s lane change (0.02: 0.030 -> 0.042 m) or
   //! the 19 m/s one with a mis-set slip observer (0.03: 0.32 -> 0.46 m) (docs/governor.md).
   static constexpr double far_law_slip_lag_share = 0.05;
-  //! What governed_parameters() derives the authority from (steering_governor.hpp): the car's
-  //! steering angle limit [rad] and friction limit mu g [m/s^2]; +inf = none.
-  double max_steering_angle_rad = std::numeric_limits<double>::infinity();
-  double max_lateral_acceleration_mps2 = std::numeric_limits<double>::infinity();
-  //! The switching authority the split certificate gave before governed_parameters() widened
-  //! it [1/m]; the near-path law keeps it (docs/governor.md). 0 = the parameters' own kbar_sw.
-  double certified_switching_bound = 0.0;
+  //! The near-path law's authority [1/m]: near the path the law steers with
+  //! min(this, kbar_sw), so that a widened kbar_n does not stiffen the tracking the split
+  //! certificate tuned (docs/governor.md, section 4). governed_parameters() lowers it to the
+  //! certified kbar_sw before it widens kbar_n; +inf = the whole kbar_sw.
+  double near_law_switching_bound = std::numeric_limits<double>::infinity();
 };
 
 //! Largest supported chain length. Fixed-size storage keeps update() allocation free.

@@ -51,7 +51,8 @@ class LeadWheelController final : public SteeringController {
   //! starts the chain at its bound, and the command moves from the measured angle to the
   //! chain's within the rate limit (the governor's R, else the certified rate |v|
   //! certificate().rate_per_meter), not at once. invalid_input, and nothing changes, for an
-  //! angle valid_reset_angle() refuses with the governor's max_steering_angle_rad.
+  //! angle valid_reset_angle() refuses with the car's angle limit, governor.max_steering_angle_rad
+  //! (ScheduledController::reset refuses the same).
   //! The disturbance estimate persists across it (DisturbanceEstimator::reset()).
   Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   //! Clears the disturbance estimate (a new car, a wheel alignment, a test from scratch).

@@ -77,8 +77,10 @@ double governed_feedforward_rate(const ControllerParameters& parameters, double 
 //! Eq. (governed_authority): the parameters at speed |v| under the governor, from certified ones
 //! (a schedule entry, whose wheelbases, k_rob and L_ff are kept). The lead curvature bound
 //! becomes the largest the car's angle and friction limits allow (never less than the certified
-//! one), and kbar_ff at least governed_feedforward_share of it. Returns `certified` unchanged when
-//! the governor is off or the widened set would leave the invariant sets (kbar_i lambda_i >= 1).
+//! one), and kbar_ff at least governed_feedforward_share of it; the near-path law's authority
+//! (SteeringGovernor::near_law_switching_bound) is lowered to the certified kbar_sw. Returns
+//! `certified` unchanged when the governor is off or the widened set would leave the invariant
+//! sets (kbar_i lambda_i >= 1).
 ControllerParameters governed_parameters(const ControllerParameters& certified,
                                          double speed_mps) noexcept;
 inline constexpr double governed_feedforward_share = 0.8;

@@ -59,6 +59,13 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
 //! Loads, overrides, validates. Relative file references (vehicle file, waypoint CSV) are
 //! resolved against the scenario's directory.
 Scenario load_scenario(const std::string& file, const std::vector<std::string>& overrides = {});
+//! load_scenario() for many loads of one file with other overrides (a campaign's cases): the
+//! scenario file and the vehicle files it names are parsed once per process, each load works on
+//! a copy, and a file whose bytes changed is parsed again; a path section seen before (every key
+//! and value the same) reuses its built path. Same result, same errors: a load that fails is
+//! repeated by load_scenario(), whose messages quote the lines (docs/campaigns.md).
+Scenario load_scenario_reusing_files(const std::string& file,
+                                     const std::vector<std::string>& overrides = {});
 
 //! Builds the path of a `path:` section (used by load_scenario; public for tests and tools).
 //! A `segments` path with gear changes also sets *plan (and returns its piece 0); without

@@ -33,6 +33,9 @@ class ScheduledController final : public SteeringController {
   Status compute_command(const ControllerInput& input, ControllerOutput& output) noexcept override;
 
  public:
+  //! The inner controller's reset: it refuses an angle beyond the car's angle limit the
+  //! parameters carry (governor.max_steering_angle_rad, LeadWheelController::reset), not beyond
+  //! the schedule's vehicle angle.
   Status reset(double measured_steering_angle_rad = 0.0) noexcept override;
   const char* name() const noexcept override { return "scheduled_lead_wheel"; }
 

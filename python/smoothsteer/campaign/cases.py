@@ -1,19 +1,23 @@
 """One case of a campaign and a batch of them: what a worker runs (docs/campaigns.md).
 
 A case is the base scenario with the spec's fixed overrides and the case's samples applied as
-`--set` applies them, run by run_scenario() (which releases the GIL). Its row holds the case
+`--set` applies them, run by run_scenario() (which releases the GIL). The base scenario's
+files are parsed once per process (load_scenario(reuse_files=True)). Its row holds the case
 index, the seed, the sampled values, the recorded metrics, whether it passed the criteria, and
 the overrides as JSON, from which the report writes the command that replays it."""
 import json
 import math
 import time
 
-from .. import run_scenario
+from .. import load_scenario, run_scenario
 from .spec import DERIVED_METRICS
 
 # The run reached the end of its path or its duration; anything else is a failure of the case.
 COMPLETED_STOPS = ("path_end", "duration")
 MAX_ERROR_CHARS = 400
+# Parse the base scenario's files once per process; False: read them for every case as
+# run_scenario(file) does (the benchmark's and the tests' comparison, the same rows).
+REUSE_BASE_FILES = True
 
 
 def columns(spec):
@@ -68,7 +72,8 @@ def run_case(spec, case):
     for attempt in (1, 2):
         started = time.perf_counter()
         try:
-            _, summary = run_scenario(spec.base, overrides)
+            scenario = load_scenario(spec.base, overrides, reuse_files=REUSE_BASE_FILES)
+            _, summary = run_scenario(scenario)
         except Exception as error:  # noqa: BLE001 - every error becomes the case's row
             errors.append(error)
             continue
