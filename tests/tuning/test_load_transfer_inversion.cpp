@@ -46,8 +46,9 @@ VehicleState rk4_step(const DynamicSingleTrack& model, const VehicleState& s, do
       dt / 6.0 * (k1.heading_rad + 2.0 * k2.heading_rad + 2.0 * k3.heading_rad + k4.heading_rad);
   next.vx_mps += dt / 6.0 * (k1.vx_mps + 2.0 * k2.vx_mps + 2.0 * k3.vx_mps + k4.vx_mps);
   next.vy_mps += dt / 6.0 * (k1.vy_mps + 2.0 * k2.vy_mps + 2.0 * k3.vy_mps + k4.vy_mps);
-  next.yaw_rate_radps += dt / 6.0 * (k1.yaw_rate_radps + 2.0 * k2.yaw_rate_radps +
-                                     2.0 * k3.yaw_rate_radps + k4.yaw_rate_radps);
+  next.yaw_rate_radps +=
+      dt / 6.0 *
+      (k1.yaw_rate_radps + 2.0 * k2.yaw_rate_radps + 2.0 * k3.yaw_rate_radps + k4.yaw_rate_radps);
   return next;
 }
 

@@ -138,7 +138,8 @@ TEST(VehicleParameters, AxleLoadsShiftWithTheLongitudinalAcceleration) {
     const double L = car.wheelbase_m(), m = car.mass_kg, g = car.gravity_mps2;
     const double front = m * (g * car.cg_to_rear_axle_m - ax * car.cg_height_m) / L;
     const double rear = m * (g * car.cg_to_front_axle_m + ax * car.cg_height_m) / L;
-    EXPECT_NEAR(car.front_axle_load_n(ax), std::max(0.0, front), 1e-9 * m * g) << seed_message(seed);
+    EXPECT_NEAR(car.front_axle_load_n(ax), std::max(0.0, front), 1e-9 * m * g)
+        << seed_message(seed);
     EXPECT_NEAR(car.rear_axle_load_n(ax), std::max(0.0, rear), 1e-9 * m * g) << seed_message(seed);
     if (front > 0.0 && rear > 0.0) {
       EXPECT_NEAR(car.front_axle_load_n(ax) + car.rear_axle_load_n(ax), m * g, 1e-9 * m * g)

@@ -200,7 +200,7 @@ struct SingleTrackInversion {
   double front_load_transfer_s2pm = 0.0;
   //! t_r [s^2/m], in [0, 1]: the rear axle's share of load gained per m/s^2 of acceleration.
   double rear_load_transfer_s2pm = 0.0;
-  double preview_time_s = 0.0;            //!< [s], in [0, max_actuator_delay_s]
+  double preview_time_s = 0.0;  //!< [s], in [0, max_actuator_delay_s]
   //! With the second-order term K_f K_r v^4 kappa'' of the inversion (true), or only its
   //! preview and gain (false). Near the friction limit the linear model over-corrects with it.
   bool second_order = true;

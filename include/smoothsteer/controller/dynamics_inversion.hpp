@@ -48,8 +48,8 @@ struct DynamicsInversion {
     const double speed_change = speed_mps > 0.0   ? acceleration_mps2
                                 : speed_mps < 0.0 ? -acceleration_mps2
                                                   : 0.0;
-    gain = std::max(0.5, 1.0 + (front - rear) * v2 / vehicle_wheelbase_m +
-                             2.0 * rear * speed_change);
+    gain =
+        std::max(0.5, 1.0 + (front - rear) * v2 / vehicle_wheelbase_m + 2.0 * rear * speed_change);
     slip_lag_m = lag / gain;
     preview_m = preview_s * speed_magnitude + slip_lag_m;
     // g kappa(s + d) carries lag^2 / (2 g) kappa''; the model asks K_f K_r v^4 kappa''.

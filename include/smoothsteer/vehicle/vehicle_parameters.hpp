@@ -55,9 +55,9 @@ struct VehicleParameters {
   //! h [m]: the axle loads shift with the longitudinal acceleration about it (both kinetic
   //! models); the double-track model also rolls about it.
   double cg_height_m = 0.614;
-  double gravity_mps2 = 9.81;  //!< g [m/s^2]
-  TireParameters front_tire;   //!< lumped front axle
-  TireParameters rear_tire;    //!< lumped rear axle
+  double gravity_mps2 = 9.81;             //!< g [m/s^2]
+  TireParameters front_tire;              //!< lumped front axle
+  TireParameters rear_tire;               //!< lumped rear axle
   double max_steering_angle_rad = 1.066;  //!< |delta| limit of the steering system [rad]
   double max_steering_rate_radps = 0.4;   //!< |d delta/dt| limit of the steering system [rad/s]
   //! |d2 delta/dt2| limit of the steering system [rad/s^2]; +inf = none given. Not enforced by
