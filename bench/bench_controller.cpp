@@ -79,7 +79,10 @@ ControllerParameters parameters_of_order(int order, Law law = Law::defaults) {
     parameters.governor.max_steering_rate_radps = 0.4;
     parameters.governor.max_steering_acceleration_radps2 = 8.0;
     // The shipped scenarios derive the far law's length per sub-step (eq. governed_law_length).
-    parameters.governor.law_length_m = law == Law::shipped ? 0.0 : 6.0;
+    if (law != Law::shipped) {
+      parameters.governor.fixed_law_length = true;
+      parameters.governor.law_length_m = 6.0;
+    }
     parameters.governor.near_law_switching_bound = 0.005;
   }
   if (law == Law::paper) {

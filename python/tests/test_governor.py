@@ -21,6 +21,22 @@ def test_governor_fields_round_trip():
     assert parameters.governor.enabled
     assert parameters.governor.max_steering_rate_radps == 0.4
     assert parameters.governor.max_steering_acceleration_radps2 == 8.0
+    # Setting the far law's length fixes it; 0 goes back to the derived one.
+    assert parameters.governor.fixed_law_length
+    assert parameters.governor.law_length_m == 6.0
+    parameters.validate()
+    parameters.governor.law_length_m = 0.0
+    assert not parameters.governor.fixed_law_length
+    parameters.validate()
+
+
+def test_a_length_while_derived_is_refused_naming_both_fields():
+    parameters = governed_parameters(0.4, 8.0)
+    parameters.governor.fixed_law_length = False
+    assert parameters.governor.law_length_m == 6.0
+    with pytest.raises(ValueError, match="governor.law_length_m = 6 has no effect while "
+                                         "governor.fixed_law_length is false"):
+        parameters.validate()
 
 
 def test_governor_validation_names_the_field():
@@ -60,7 +76,7 @@ def test_governor_equations_from_python():
     0.7 sqrt(v lambda_veh / R) at the reversal heading; eq. (governed_feedforward_rate) steers at
     R; the widened parameters keep the certified switching authority."""
     parameters = governed_parameters(0.4, 8.0)
-    parameters.governor.law_length_m = 0.0
+    parameters.governor.law_length_m = 0.0  # derived again
     wheelbase = parameters.chain.vehicle_wheelbase_m
     speed = 15.0
     floor = max(sum(parameters.chain.wheelbases_m[:2]), 1.0 + 0.25 * speed)

@@ -232,6 +232,18 @@ bool check_inert_settings(const ControllerParameters& p, Fail& fail) {
                 text("has no effect with surface = paper (psi_max shapes the global law's "
                      "reference heading only)"));
   }
+  const SteeringGovernor& governor = p.governor;
+  if (governor.enabled && governor.fixed_law_length && !(governor.law_length_m > 0.0)) {
+    return fail(text("governor.law_length_m"), governor.law_length_m,
+                text("must be > 0 m with governor.fixed_law_length = true (the far law's layer "
+                     "l kbar_sw / 2 needs a length)"));
+  }
+  if (governor.enabled && !governor.fixed_law_length &&
+      governor.law_length_m != defaults.governor.law_length_m) {
+    return fail(text("governor.law_length_m"), governor.law_length_m,
+                text("has no effect while governor.fixed_law_length is false (the length is "
+                     "derived from the speed and the heading error, eq. governed_law_length)"));
+  }
   if (p.feedforward.catch_up > 0.0 && std::isinf(p.feedforward.curvature_rate)) {
     return fail(text("feedforward_catch_up"), p.feedforward.catch_up,
                 text("has no effect with feedforward_curvature_rate = +inf (an unlimited "

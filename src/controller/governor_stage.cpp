@@ -62,9 +62,7 @@ GovernorStage::Authority GovernorStage::authority(const ControllerParameters& pa
   // Eq. (governed_law_length) at the envelope of the lead wheel's heading error, unless the
   // parameters fix the length. The layer epsilon = l kbar_sw / 2 keeps the law's linear zone
   // kappa_sw = -e / l^2 - 2 psi / l whatever the authority.
-  const double length = parameters.governor.law_length_m > 0.0
-                            ? parameters.governor.law_length_m
-                            : governed_law_length(parameters, speed_magnitude_, heading_envelope_);
+  const double length = far_law_length(parameters, speed_magnitude_, heading_envelope_);
   return {bound, 0.5 * length * bound};
 }
 

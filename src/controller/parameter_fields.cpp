@@ -46,6 +46,13 @@ constexpr double to_double(T value) noexcept {
     p.group.enabled = v != (off);              \
   }
 
+// The far law's length through its flat field: a length fixes it, 0 leaves it derived.
+#define SMOOTHSTEER_FIX_LAW_LENGTH          \
+  [](P& p, double v) noexcept {             \
+    p.governor.law_length_m = v;            \
+    p.governor.fixed_law_length = v != 0.0; \
+  }
+
 // The single-track inversion is on while either slip gradient is.
 #define SMOOTHSTEER_SLIP(path)                                                \
   [](P& p, double v) noexcept {                                               \
@@ -250,12 +257,19 @@ const std::array fields{
     false, ScenarioKey::direct, "",
     SMOOTHSTEER_GET(governor.max_longitudinal_acceleration_mps2),
     SMOOTHSTEER_SET(governor.max_longitudinal_acceleration_mps2)},
-  ParameterField{"governor.law_length_m", "governor.law_length_m", K::real, closed(0, 1000), "m",
-    " (0: derived)", "l: the far law's boundary layer epsilon = "
-    "l kbar_sw / 2, a critically damped linear zone; 0 = derived from the speed and the heading "
-    "error (eq. governed_law_length)", "", G::governor,
+  ParameterField{"governor.law_length_m", "governor.law_length_m", K::real,
+    {{0.0, 1000.0, true, false}, 0.0}, "m", "; > 0 with governor.fixed_law_length = true",
+    "l, the far law's fixed length (used with governor.fixed_law_length): boundary layer "
+    "epsilon = l kbar_sw / 2, a critically damped linear zone; setting this field fixes the "
+    "length, 0 derives it", "", G::governor,
     false, ScenarioKey::direct, "",
-    SMOOTHSTEER_GET(governor.law_length_m), SMOOTHSTEER_SET(governor.law_length_m)},
+    SMOOTHSTEER_GET(governor.law_length_m), SMOOTHSTEER_FIX_LAW_LENGTH},
+  // After law_length_m: a scenario's `fixed_law_length` then overrides what law_length_m set.
+  ParameterField{"governor.fixed_law_length", "governor.fixed_law_length", K::boolean,
+    closed(0, 1), "", "", "the far law's length is governor.law_length_m; false = derived at "
+    "every sub-step from the speed and the heading error (eq. governed_law_length)", "",
+    G::governor, false, ScenarioKey::direct, "",
+    SMOOTHSTEER_GET(governor.fixed_law_length), SMOOTHSTEER_SET(governor.fixed_law_length)},
   ParameterField{"governor.margin", "governor.margin", K::real, right_open(0, 0.5), "",
     "", "share of R and A kept for the chain's variation within a sub-step",
     "", G::governor, false, ScenarioKey::direct, "",
@@ -274,6 +288,7 @@ const std::array fields{
 #undef SMOOTHSTEER_SET
 #undef SMOOTHSTEER_SWITCH
 #undef SMOOTHSTEER_SLIP
+#undef SMOOTHSTEER_FIX_LAW_LENGTH
 
 }  // namespace
 

@@ -153,13 +153,18 @@ double governed_law_length(const ControllerParameters& parameters, double speed_
   return std::max({reach, 1.0 + 0.25 * v, rate_bound});
 }
 
+double far_law_length(const ControllerParameters& parameters, double speed_mps,
+                      double heading_error_rad) noexcept {
+  return parameters.governor.fixed_law_length
+             ? parameters.governor.law_length_m
+             : governed_law_length(parameters, speed_mps, heading_error_rad);
+}
+
 double governed_reversal_curvature(const ControllerParameters& parameters,
                                    double speed_mps) noexcept {
   const double v = std::abs(speed_mps);
   const double rate = parameters.governor.max_steering_rate_radps;
-  const double length = parameters.governor.law_length_m > 0.0
-                            ? parameters.governor.law_length_m
-                            : governed_law_length(parameters, v, governed_reversal_heading_rad);
+  const double length = far_law_length(parameters, v, governed_reversal_heading_rad);
   if (!(v > 0.0) || !std::isfinite(rate)) return unbounded;
   // n = 1 reverses within half the law's length: its command follows kappa_n within a sub-step,
   // and at the full length a random closed loop (v = 18.7 m/s, R = 1.5 rad/s) kept a 0.29 m limit

@@ -34,7 +34,8 @@ ControllerParameters governed(Random& random, int order) {
   g.max_steering_acceleration_radps2 =
       random.uniform(1.2, 6.0) * (45.0 * g.max_steering_rate_radps / p.chain.wheelbases_m[0] +
                                   3.0 * g.max_steering_rate_radps);
-  g.law_length_m = random.coin() ? random.uniform(2.0, 20.0) : 0.0;
+  g.fixed_law_length = random.coin();
+  if (g.fixed_law_length) g.law_length_m = random.uniform(2.0, 20.0);
   // Lowered as governed_parameters() lowers it, or left at its default (the whole kbar_sw).
   if (random.coin()) {
     g.near_law_switching_bound = random.uniform(0.2, 1.0) * p.switching_curvature_bound();
@@ -132,7 +133,7 @@ TEST(GovernorStage, AuthorityBlendAndClampKeepTheirBounds) {
       const GovernorStage::Authority authority = stage.authority(p, feedforward);
       EXPECT_GE(authority.bound, near_bound);
       EXPECT_GE(stage.feedforward_envelope(), std::abs(feedforward));
-      const double length = p.governor.law_length_m > 0.0
+      const double length = p.governor.fixed_law_length
                                 ? p.governor.law_length_m
                                 : governed_law_length(p, speed, stage.heading_envelope());
       EXPECT_DOUBLE_EQ(authority.layer, 0.5 * length * authority.bound);

@@ -32,6 +32,7 @@ TEST(RealTime, UpdateDoesNotAllocate) {
       parameters.governor.enabled = true;
       parameters.governor.max_steering_rate_radps = 0.4;
       parameters.governor.max_steering_acceleration_radps2 = 8.0;
+      parameters.governor.fixed_law_length = true;
       parameters.governor.law_length_m = 4.0;
     }
     LeadWheelController controller(parameters, path);

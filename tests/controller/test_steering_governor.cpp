@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <string>
 
 #include "smoothsteer/controller/feedforward.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
@@ -46,8 +47,8 @@ ControllerParameters random_governed_parameters(Random& random, int order, doubl
   g.max_steering_acceleration_radps2 = random.uniform(1.2, 6.0) * viable;
   // Derived from the heading error at every sub-step, or fixed at least at the reversal bound's
   // length (shorter fixed ones can limit-cycle against the rate limit).
-  g.law_length_m = 0.0;
-  if (random.coin()) {
+  g.fixed_law_length = random.coin();
+  if (g.fixed_law_length) {
     g.law_length_m =
         random.uniform(1.0, 3.0) * governed_law_length(p, top_speed, governed_reversal_heading_rad);
   }
@@ -93,7 +94,8 @@ TEST(SteeringGovernor, HeldCommandStaysWithinTheLimits) {
     const SteeringGovernor& g = p.governor;
     std::ostringstream text;
     text << describe(p) << " R=" << g.max_steering_rate_radps
-         << " A=" << g.max_steering_acceleration_radps2 << " l=" << g.law_length_m
+         << " A=" << g.max_steering_acceleration_radps2
+         << " l=" << (g.fixed_law_length ? std::to_string(g.law_length_m) : "derived")
          << " share=" << p.feedforward.share << " L_ff=" << p.feedforward.curvature_rate
          << " path=" << kind << " start=(" << start.position.x << "," << start.position.y << ","
          << start.heading_rad << ") dv/dt=" << longitudinal;
@@ -312,8 +314,10 @@ TEST(SteeringGovernor, SmallHeadingErrorIsCorrectedNoSlowerThanWithTheFormerLeng
       return worst;
     };
     ControllerParameters derived = p;
+    derived.governor.fixed_law_length = false;
     derived.governor.law_length_m = 0.0;
     ControllerParameters former = p;
+    former.governor.fixed_law_length = true;
     former.governor.law_length_m = governed_law_length(p, speed, governed_reversal_heading_rad);
     double derived_final = 0.0, former_final = 0.0;
     const double derived_worst = worst_error(derived, derived_final);

@@ -57,5 +57,26 @@ TEST(GovernorKeys, AcceptExactlyWhatTheFieldTableAccepts) {
   EXPECT_TRUE(loads("margin", 0.0, message)) << message;
 }
 
+// A file that writes `governor: {law_length_m: 6}` fixes the far law's length at 6 m, as the key
+// did when 0 meant "derived"; without the key the length stays derived.
+TEST(GovernorKeys, ALawLengthKeyFixesTheLength) {
+  const std::string file = (testing::source_dir() / "scenarios/lane_change_15.yaml").string();
+  const auto governor = [&file](const std::vector<std::string>& overrides) {
+    return make_scheduled_controller(load_scenario(file, overrides))
+        ->controller()
+        .parameters()
+        .governor;
+  };
+  const SteeringGovernor fixed = governor({"controller.governor.law_length_m=6"});
+  EXPECT_TRUE(fixed.fixed_law_length);
+  EXPECT_EQ(fixed.law_length_m, 6.0);
+  const SteeringGovernor derived = governor({});
+  EXPECT_FALSE(derived.fixed_law_length);
+  EXPECT_EQ(derived.law_length_m, 0.0);
+  // The choice said explicitly overrides the key's.
+  EXPECT_ANY_THROW(governor(
+      {"controller.governor.law_length_m=6", "controller.governor.fixed_law_length=false"}));
+}
+
 }  // namespace
 }  // namespace smoothsteer::runner

@@ -71,11 +71,13 @@ struct SteeringGovernor {
   //! |dv/dt| [m/s^2] the bound budgets for beyond the measured one (the speed changes between
   //! two control periods enter the held command's second difference as |dv/dt| |rate| / v).
   double max_longitudinal_acceleration_mps2 = 0.0;
-  //! l [m]: length scale of the law near the path. The boundary layer becomes
-  //! epsilon = l kbar_sw / 2, so that the law's linear zone is the critically damped
-  //! kappa_sw = -e / l^2 - 2 psi / l whatever the authority kbar_sw (docs/governor.md).
-  //! 0 = derived at every sub-step from the speed, R and the lead wheel's heading error
-  //! (governed_law_length(), eq. governed_law_length).
+  //! l [m]: length scale of the far law. Its boundary layer becomes epsilon = l kbar_sw / 2, so
+  //! that the law's linear zone is the critically damped kappa_sw = -e / l^2 - 2 psi / l
+  //! whatever the authority kbar_sw (docs/governor.md). Derived at every sub-step from the
+  //! speed, R and the lead wheel's heading error (governed_law_length(), eq.
+  //! governed_law_length), unless fixed_law_length: then law_length_m, in (0, 1000] m. Setting
+  //! law_length_m through the field table (scenario key, Python) fixes it; there 0 = derived.
+  bool fixed_law_length = false;
   double law_length_m = 0.0;
   //! Share of R and A kept in reserve for the variation of the chain within a sub-step.
   double margin = 0.02;

@@ -60,7 +60,7 @@ CurvatureInterval governed_lead_curvature_interval(const ChainAngles& angles,
 //! lambda_veh |v|): reversing the steering of +-kbar at the rate limit R takes 2 lambda_veh kbar /
 //! R seconds, and the car must not travel more than d meanwhile, or the law overshoots its surface
 //! into a limit cycle; d = l for n = 2, l / 2 for n = 1 (docs/governor.md, section 4), with l the
-//! configured law length, else governed_law_length() at governed_reversal_heading_rad.
+//! far_law_length() at governed_reversal_heading_rad.
 double governed_reversal_curvature(const ControllerParameters& parameters,
                                    double speed_mps) noexcept;
 //! The heading error [rad] at which the reversal bound takes the law length: there
@@ -90,5 +90,9 @@ inline constexpr double governed_feedforward_share = 0.8;
 //! not shrink in the middle of correcting a large one.
 double governed_law_length(const ControllerParameters& parameters, double speed_mps,
                            double heading_error_rad) noexcept;
+//! The far law's length the governor uses [m]: SteeringGovernor::law_length_m when the
+//! parameters fix it (fixed_law_length), else governed_law_length().
+double far_law_length(const ControllerParameters& parameters, double speed_mps,
+                      double heading_error_rad) noexcept;
 
 }  // namespace smoothsteer
