@@ -22,11 +22,16 @@ class Path;
 class LeadWheelController;
 
 struct ControllerInput {
-  Vec2 rear_axle_position;         //!< rear-axle reference point in the world frame [m]
-  double heading_rad = 0.0;        //!< vehicle heading psi [rad]
-  double speed_mps = 0.0;          //!< signed longitudinal speed v [m/s]; v < 0 reverses
-  double acceleration_mps2 = 0.0;  //!< dv/dt [m/s^2]; enters d2(delta)/dt2 only
-  double period_s = 0.02;          //!< control period dt [s]
+  Vec2 rear_axle_position;   //!< rear-axle reference point in the world frame [m]
+  double heading_rad = 0.0;  //!< vehicle heading psi [rad]
+  double speed_mps = 0.0;    //!< signed longitudinal speed v [m/s]; v < 0 reverses
+  //! dv/dt [m/s^2]: the held command's second difference budgets for it, and the single-track
+  //! inversion shifts its slip gradients with it (load transfer, the rear slip's change with the
+  //! speed; docs/vehicle_dynamics.md section 3). Give it smoothed (the speed controller's
+  //! reference or a low-passed derivative of the wheel speeds): on a curve 0.5 m/s^2 of noise
+  //! moves the passenger car's feedforward gain by about 4 % at 20 m/s.
+  double acceleration_mps2 = 0.0;
+  double period_s = 0.02;  //!< control period dt [s]
   //! beta_r: side slip of the rear axle [rad], the angle from the vehicle's heading to the
   //! rear axle's velocity (atan((vy - l_r r) / vx) on a single-track model). The kinematic law
   //! steers the direction of travel, which on a real car is the course psi + beta_r, not psi
