@@ -26,19 +26,19 @@ class ConstantSteering final : public SteeringController {
   double angle_;
 };
 
-//! One classic RK4 step of the vehicle model with the steering held and no longitudinal
-//! acceleration.
+//! One classic RK4 step of the vehicle model with the steering and the longitudinal
+//! acceleration held.
 inline VehicleState vehicle_rk4_step(const VehicleModel& model, const VehicleState& x, double delta,
-                                     double h) {
+                                     double h, double acceleration = 0.0) {
   auto add = [](const VehicleState& a, const VehicleState& b, double k) {
     return VehicleState{
         a.x_m + k * b.x_m,       a.y_m + k * b.y_m,       a.heading_rad + k * b.heading_rad,
         a.vx_mps + k * b.vx_mps, a.vy_mps + k * b.vy_mps, a.yaw_rate_radps + k * b.yaw_rate_radps};
   };
-  const VehicleState k1 = model.derivative(x, delta, 0.0);
-  const VehicleState k2 = model.derivative(add(x, k1, h / 2), delta, 0.0);
-  const VehicleState k3 = model.derivative(add(x, k2, h / 2), delta, 0.0);
-  const VehicleState k4 = model.derivative(add(x, k3, h), delta, 0.0);
+  const VehicleState k1 = model.derivative(x, delta, acceleration);
+  const VehicleState k2 = model.derivative(add(x, k1, h / 2), delta, acceleration);
+  const VehicleState k3 = model.derivative(add(x, k2, h / 2), delta, acceleration);
+  const VehicleState k4 = model.derivative(add(x, k3, h), delta, acceleration);
   VehicleState out = x;
   out = add(out, k1, h / 6);
   out = add(out, k2, h / 3);

@@ -13,6 +13,7 @@
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
 #include "smoothsteer/vehicle/vehicle_model.hpp"
 #include "support/property.hpp"
+#include "support/sim_test_support.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -21,36 +22,7 @@ using testing::case_seed;
 using testing::property_cases;
 using testing::Random;
 using testing::seed_message;
-
-//! The plant's state after one RK4 step of dt with steering delta and acceleration ax.
-VehicleState rk4_step(const DynamicSingleTrack& model, const VehicleState& s, double delta,
-                      double ax, double dt) {
-  const auto at = [&](const VehicleState& base, const VehicleState& rate, double h) {
-    VehicleState x = base;
-    x.x_m += h * rate.x_m;
-    x.y_m += h * rate.y_m;
-    x.heading_rad += h * rate.heading_rad;
-    x.vx_mps += h * rate.vx_mps;
-    x.vy_mps += h * rate.vy_mps;
-    x.yaw_rate_radps += h * rate.yaw_rate_radps;
-    return x;
-  };
-  const VehicleState k1 = model.derivative(s, delta, ax);
-  const VehicleState k2 = model.derivative(at(s, k1, 0.5 * dt), delta, ax);
-  const VehicleState k3 = model.derivative(at(s, k2, 0.5 * dt), delta, ax);
-  const VehicleState k4 = model.derivative(at(s, k3, dt), delta, ax);
-  VehicleState next = s;
-  next.x_m += dt / 6.0 * (k1.x_m + 2.0 * k2.x_m + 2.0 * k3.x_m + k4.x_m);
-  next.y_m += dt / 6.0 * (k1.y_m + 2.0 * k2.y_m + 2.0 * k3.y_m + k4.y_m);
-  next.heading_rad +=
-      dt / 6.0 * (k1.heading_rad + 2.0 * k2.heading_rad + 2.0 * k3.heading_rad + k4.heading_rad);
-  next.vx_mps += dt / 6.0 * (k1.vx_mps + 2.0 * k2.vx_mps + 2.0 * k3.vx_mps + k4.vx_mps);
-  next.vy_mps += dt / 6.0 * (k1.vy_mps + 2.0 * k2.vy_mps + 2.0 * k3.vy_mps + k4.vy_mps);
-  next.yaw_rate_radps +=
-      dt / 6.0 *
-      (k1.yaw_rate_radps + 2.0 * k2.yaw_rate_radps + 2.0 * k3.yaw_rate_radps + k4.yaw_rate_radps);
-  return next;
-}
+using testing::vehicle_rk4_step;
 
 //! The rear axle's course angle and speed: the direction and magnitude of its velocity.
 struct RearCourse {
@@ -118,7 +90,7 @@ TEST(LoadTransferInversion, HoldsTheCurvatureWhileBrakingAndAccelerating) {
       steady.update(inversion, s.vx_mps, wheelbase, a);
       const double delta = std::atan(wheelbase * steady.gain * curvature);
       const RearCourse before = rear_course(car, s);
-      s = rk4_step(model, s, delta, a, dt);
+      s = vehicle_rk4_step(model, s, delta, dt, a);
       const RearCourse after = rear_course(car, s);
       // The first second of the ramp is the slip's transient after the step in acceleration.
       if (i >= settle + 1000) {

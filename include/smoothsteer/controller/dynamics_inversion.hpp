@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "smoothsteer/controller/controller_parameters.hpp"
+#include "smoothsteer/math/angles.hpp"
 
 namespace smoothsteer {
 
@@ -45,9 +46,7 @@ struct DynamicsInversion {
     // As the speed changes, so does the rear axle's slip -K_r v^2 kappa on a given curvature:
     // the heading turns by d(K_r v^2 kappa)/dt more than the course, which adds 2 K_r a kappa to
     // the stationary steering per wheelbase, a = d|v|/dt (docs/vehicle_dynamics.md, section 3).
-    const double speed_change = speed_mps > 0.0   ? acceleration_mps2
-                                : speed_mps < 0.0 ? -acceleration_mps2
-                                                  : 0.0;
+    const double speed_change = sign(speed_mps) * acceleration_mps2;
     gain =
         std::max(0.5, 1.0 + (front - rear) * v2 / vehicle_wheelbase_m + 2.0 * rear * speed_change);
     slip_lag_m = lag / gain;
