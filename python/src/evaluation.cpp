@@ -40,6 +40,15 @@ py::list table_rows(const ResultsTable& table) {
   return rows;
 }
 
+//! A comparison's tables as Python returns them: {'runs', 'summary', 'summary_notes'}.
+py::dict comparison_tables(const ResultsTable& runs, const ResultsTable& summary) {
+  py::dict tables;
+  tables["runs"] = table_rows(runs);
+  tables["summary"] = table_rows(summary);
+  tables["summary_notes"] = summary.notes;
+  return tables;
+}
+
 py::dict compare_robustness(const std::vector<std::pair<std::string, double>>& scenarios,
                             const std::vector<std::string>& vehicles,
                             const std::vector<std::string>& models,
@@ -58,11 +67,7 @@ py::dict compare_robustness(const std::vector<std::pair<std::string, double>>& s
     py::gil_scoped_release unlocked;  // minutes for the whole matrix
     result = run_robustness_comparison(options);
   }
-  py::dict tables;
-  tables["runs"] = table_rows(result.runs);
-  tables["summary"] = table_rows(result.summary);
-  tables["summary_notes"] = result.summary.notes;
-  return tables;
+  return comparison_tables(result.runs, result.summary);
 }
 
 py::dict compare_tight_corners(const std::string& scenario_directory,
@@ -76,12 +81,7 @@ py::dict compare_tight_corners(const std::string& scenario_directory,
     py::gil_scoped_release unlocked;  // about 20 s on two threads
     result = run_tight_corner_study(options);
   }
-  py::dict tables;
-  tables["runs"] = table_rows(result.table());
-  const ResultsTable summary = result.summary();
-  tables["summary"] = table_rows(summary);
-  tables["summary_notes"] = summary.notes;
-  return tables;
+  return comparison_tables(result.table(), result.summary());
 }
 
 py::dict kinetic_reference(std::shared_ptr<const Path> path, const VehicleParameters& vehicle,
