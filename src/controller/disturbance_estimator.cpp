@@ -20,10 +20,12 @@ void DisturbanceEstimator::update(const ControllerInput& input, const Context& c
       const auto age = std::min<std::size_t>(
           commands.count() - 1, static_cast<std::size_t>(std::lround(delay / input.period_s)));
       const double commanded = std::tan(commands.issued(age).steering_rad) / context.wheelbase_m;
-      // In the chain's units: the inversion steers g kappa for a course curvature kappa
-      // (understeer is the model's, not a disturbance), so the disturbance is g kappa - command.
+      // In the chain's units: the inversion steers g(kappa) kappa for a course curvature kappa
+      // (understeer and the steady geometry are the model's, not a disturbance), so the
+      // disturbance is g(kappa) kappa - command.
+      const double course_curvature = wrap_angle(course - previous_course_) / distance;
       const double measured =
-          context.dynamics_gain * wrap_angle(course - previous_course_) / distance;
+          context.dynamics.gain_at(course_curvature, context.wheelbase_m) * course_curvature;
       // Learn where the path has let the car settle: while the path's curvature moves, the slip
       // and actuator transients that the model leaves read as a disturbance. The path at the
       // rear axle counts as steady while its lateral jerk v^3 |d kappa / ds| stays below

@@ -91,7 +91,7 @@ void LeadWheelController::estimate_disturbance(const ControllerInput& input) noe
       .direction = direction_,
       .delay_s = prediction_horizon_s(input),
       .slip_lag_m = dynamics_.slip_lag_m,
-      .dynamics_gain = dynamics_.gain,
+      .dynamics = dynamics_,
       .wheelbase_m = parameters_.chain.vehicle_wheelbase_m,
       .feedforward_bound = parameters_.feedforward_curvature_bound()};
   disturbance_.update(input, context, delay_);

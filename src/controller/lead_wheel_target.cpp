@@ -51,9 +51,10 @@ TargetCurve LeadWheelController::target_curve(const PathProjection& lead,
                                                           parameters_.chain.wheelbases_m.data(),
                                                           parameters_.chain.order, feedforward_rate)
                              : curvature_jet(curvature.before, curvature.at, curvature.after);
-  jet.value = dynamics_.gain * jet.value + dynamics_.bend_m2 * jet.bend;
-  jet.slope *= dynamics_.gain;
-  jet.bend *= dynamics_.gain;
+  const double gain = dynamics_.gain_at(jet.value, parameters_.chain.vehicle_wheelbase_m);
+  jet.value = gain * jet.value + dynamics_.bend_m2 * jet.bend;
+  jet.slope *= gain;
+  jet.bend *= gain;
   if (kind == CorneringTarget::lead_wheel) return {0.0, 0.0, jet.value};
   const double d = disturbance_.estimate();
   TargetCurve target;

@@ -347,24 +347,47 @@ Path Path::assemble(std::vector<PathSegment> segments, bool closed) {
   }
   if (!closed && !cubic(pieces.back())) add_kink(path.length_, slope(pieces.back()), 0.0);
   if (std::any_of(pieces.begin(), pieces.end(), cubic)) {
+    double cubic_length = 0.0;
+    std::size_t cubic_count = 0;
+    for (const PathSegment& piece : pieces) {
+      if (cubic(piece)) {
+        cubic_length += piece.length;
+        ++cubic_count;
+      }
+    }
     path.max_abs_spline_kink_ =
-        spline_kink(path.curvature_samples_, path.curvature_spacing_, closed);
+        spline_kink(path.curvature_samples_, path.curvature_spacing_,
+                    cubic_length / static_cast<double>(cubic_count), closed);
   }
   return path;
 }
 
-double Path::spline_kink(const std::vector<double>& samples, double spacing, bool closed) noexcept {
+double Path::spline_kink(const std::vector<double>& samples, double spacing, double knot_spacing,
+                         bool closed) noexcept {
   const auto count = static_cast<long>(samples.size());
   const long spread = std::max(1L, std::lround(spline_kink_spread_m / spacing));
   // A natural spline's ends hold zero curvature, which bends an open path's first and last
   // metres away from the road it samples: they are not a kink of the road.
   const long skip = closed ? 0 : std::lround(spline_end_margin_m / spacing);
+  // An interpolating cubic spline rings after a kink of the curvature it samples: its knots'
+  // curvatures alternate about the road's, decaying by 2 - sqrt(3) per knot, so the slope
+  // right after a kink overshoots its step (a 2.5 m clothoid sampled every metre reads 1.21
+  // times its step). The mean over one knot spacing (a trapezoid over the samples) cancels the
+  // alternation before the slopes are compared.
+  const long half = std::clamp(std::lround(0.5 * knot_spacing / spacing), 0L, 2 * spread);
+  auto knot_mean = [&](long i) {
+    double sum = 0.0, weight = 0.0;
+    for (long j = -half; j <= half; ++j) {
+      const double w = (half > 0 && (j == -half || j == half)) ? 0.5 : 1.0;
+      sum += w * samples[static_cast<std::size_t>(std::clamp(i + j, 0L, count - 1))];
+      weight += w;
+    }
+    return sum / weight;
+  };
   double largest = 0.0;
   for (long i = skip; i + spread + 1 < count - skip; ++i) {
-    const auto at = static_cast<std::size_t>(i);
-    const auto ahead = static_cast<std::size_t>(i + spread);
-    const double before = samples[at + 1] - samples[at];
-    const double after = samples[ahead + 1] - samples[ahead];
+    const double before = knot_mean(i + 1) - knot_mean(i);
+    const double after = knot_mean(i + spread + 1) - knot_mean(i + spread);
     largest = std::max(largest, std::abs(after - before) / spacing);
   }
   return largest;

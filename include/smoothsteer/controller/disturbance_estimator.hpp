@@ -10,6 +10,7 @@
 //! offset, a tire's pull or a road's usual crossfall stay; forget() clears it.
 
 #include "smoothsteer/controller/delay_prediction.hpp"
+#include "smoothsteer/controller/dynamics_inversion.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/math/vec2.hpp"
 
@@ -24,7 +25,7 @@ class DisturbanceEstimator {
     double direction = 1.0;          //!< +1 forwards: the estimate learns only then
     double delay_s = 0.0;            //!< the delay compensation's delay [s]
     double slip_lag_m = 0.0;         //!< the single-track inversion's slip lag [m]
-    double dynamics_gain = 1.0;      //!< g of the single-track inversion
+    DynamicsInversion dynamics;      //!< the single-track inversion at this speed
     double wheelbase_m = 1.0;        //!< lambda_veh
     double feedforward_bound = 0.0;  //!< kbar_ff: the estimate stays within it
   };

@@ -173,8 +173,9 @@ class Path {
   double max_abs_curvature_kink() const noexcept { return max_abs_curvature_kink_; }
   //! A spline through waypoints spreads a clothoid's start (a kink) over a knot or two, where
   //! no kink is listed. On a path with cubic pieces: the largest change of the sampled
-  //! curvature's slope across spline_kink_spread_m [1/m^2] (a kink's step, once spread); 0 on a
-  //! path of lines, arcs and clothoids, whose kinks are listed.
+  //! curvature's slope across spline_kink_spread_m [1/m^2] (a kink's step, once spread), the
+  //! curvature taken as its mean over one knot spacing (the spline's ringing after a kink
+  //! cancels there); 0 on a path of lines, arcs and clothoids, whose kinks are listed.
   double max_abs_spline_kink() const noexcept { return max_abs_spline_kink_; }
   //! The distance over which max_abs_spline_kink() measures a slope's change [m].
   static constexpr double spline_kink_spread_m = 2.0;
@@ -259,8 +260,8 @@ class Path {
   std::vector<CurvatureKink> curvature_kinks_;
   double max_abs_curvature_kink_ = 0.0;
   double max_abs_spline_kink_ = 0.0;
-  //! max_abs_spline_kink() of the samples `spacing` apart.
-  static double spline_kink(const std::vector<double>& samples, double spacing,
+  //! max_abs_spline_kink() of the samples `spacing` apart, from knots `knot_spacing` apart.
+  static double spline_kink(const std::vector<double>& samples, double spacing, double knot_spacing,
                             bool closed) noexcept;
 };
 
