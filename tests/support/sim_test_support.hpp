@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers of the simulation tests.
 
+#include <cmath>
 #include <random>
 
 #include "smoothsteer/controller/steering_controller.hpp"
@@ -25,6 +26,28 @@ class ConstantSteering final : public SteeringController {
  private:
   double angle_;
 };
+
+//! The rear axle's course angle and speed: the direction and magnitude of its velocity.
+struct RearAxleCourse {
+  double angle_rad, speed_mps;
+};
+inline RearAxleCourse rear_axle_course(const VehicleParameters& car, const VehicleState& s) {
+  const double lateral = s.vy_mps - car.cg_to_rear_axle_m * s.yaw_rate_radps;
+  return {s.heading_rad + std::atan2(lateral, s.vx_mps), std::hypot(s.vx_mps, lateral)};
+}
+
+//! A random car as the single-track inversion models it: mass and axle positions drawn from
+//! those of passenger cars and vans, the yaw inertia of two point masses on the axles, m lf lr
+//! (docs/vehicle_dynamics.md, section 3; the shipped car's is within 0.3 % of it).
+template <typename RandomSource>
+VehicleParameters random_two_mass_car(RandomSource& random) {
+  VehicleParameters car;
+  car.mass_kg = random.uniform(900.0, 2500.0);
+  car.cg_to_front_axle_m = random.uniform(1.0, 1.6);
+  car.cg_to_rear_axle_m = random.uniform(1.0, 1.6);
+  car.yaw_inertia_kgm2 = car.mass_kg * car.cg_to_front_axle_m * car.cg_to_rear_axle_m;
+  return car;
+}
 
 //! One classic RK4 step of the vehicle model with the steering and the longitudinal
 //! acceleration held.

@@ -21,17 +21,11 @@ namespace {
 using testing::case_seed;
 using testing::property_cases;
 using testing::Random;
+using testing::random_two_mass_car;
+using testing::rear_axle_course;
+using testing::RearAxleCourse;
 using testing::seed_message;
 using testing::vehicle_rk4_step;
-
-//! The rear axle's course angle and speed: the direction and magnitude of its velocity.
-struct RearCourse {
-  double angle_rad, speed_mps;
-};
-RearCourse rear_course(const VehicleParameters& car, const VehicleState& s) {
-  const double lateral = s.vy_mps - car.cg_to_rear_axle_m * s.yaw_rate_radps;
-  return {s.heading_rad + std::atan2(lateral, s.vx_mps), std::hypot(s.vx_mps, lateral)};
-}
 
 SingleTrackInversion inversion_of(const VehicleParameters& car, bool load_transfer) {
   const InversionSlipGradients gradients = inversion_slip_gradients(car);
@@ -55,13 +49,7 @@ TEST(LoadTransferInversion, HoldsTheCurvatureWhileBrakingAndAccelerating) {
   for (int k = 0; k < property_cases(16); ++k) {
     const auto seed = case_seed(k);
     Random random(seed);
-    VehicleParameters car;
-    car.mass_kg = random.uniform(900.0, 2500.0);
-    car.cg_to_front_axle_m = random.uniform(1.0, 1.6);
-    car.cg_to_rear_axle_m = random.uniform(1.0, 1.6);
-    // The inversion's model: the yaw inertia of two point masses on the axles, m lf lr
-    // (docs/vehicle_dynamics.md, section 3; the shipped car's is within 0.3 % of it).
-    car.yaw_inertia_kgm2 = car.mass_kg * car.cg_to_front_axle_m * car.cg_to_rear_axle_m;
+    VehicleParameters car = random_two_mass_car(random);
     car.cg_height_m = random.uniform(0.4, 1.0);
     car.front_tire.stiffness_factor_b = random.uniform(12.0, 20.0);
     car.rear_tire.stiffness_factor_b = random.uniform(12.0, 20.0);
@@ -89,9 +77,9 @@ TEST(LoadTransferInversion, HoldsTheCurvatureWhileBrakingAndAccelerating) {
       DynamicsInversion steady;
       steady.update(inversion, s.vx_mps, wheelbase, a);
       const double delta = std::atan(wheelbase * steady.gain * curvature);
-      const RearCourse before = rear_course(car, s);
+      const RearAxleCourse before = rear_axle_course(car, s);
       s = vehicle_rk4_step(model, s, delta, dt, a);
-      const RearCourse after = rear_course(car, s);
+      const RearAxleCourse after = rear_axle_course(car, s);
       // The first second of the ramp is the slip's transient after the step in acceleration.
       if (i >= settle + 1000) {
         const double turned = (after.angle_rad - before.angle_rad) /

@@ -22,6 +22,9 @@ namespace {
 using testing::case_seed;
 using testing::property_cases;
 using testing::Random;
+using testing::random_two_mass_car;
+using testing::rear_axle_course;
+using testing::RearAxleCourse;
 using testing::seed_message;
 using testing::vehicle_rk4_step;
 
@@ -32,18 +35,14 @@ double settled_rear_curvature(const VehicleParameters& car, double speed_mps, do
   VehicleState s;
   s.vx_mps = speed_mps;
   const double dt = 1e-3;
-  auto course = [&car](const VehicleState& state) {
-    const double lateral = state.vy_mps - car.cg_to_rear_axle_m * state.yaw_rate_radps;
-    return state.heading_rad + std::atan2(lateral, state.vx_mps);
-  };
   for (int i = 0; i < 6000; ++i) s = vehicle_rk4_step(model, s, steering_rad, dt);
   double turned = 0.0, driven = 0.0;
   for (int i = 0; i < 1000; ++i) {
-    const double before = course(s);
-    const double lateral = s.vy_mps - car.cg_to_rear_axle_m * s.yaw_rate_radps;
-    driven += std::hypot(s.vx_mps, lateral) * dt;
+    const RearAxleCourse before = rear_axle_course(car, s);
     s = vehicle_rk4_step(model, s, steering_rad, dt);
-    turned += course(s) - before;
+    const RearAxleCourse after = rear_axle_course(car, s);
+    driven += 0.5 * (before.speed_mps + after.speed_mps) * dt;
+    turned += after.angle_rad - before.angle_rad;
   }
   return turned / driven;
 }
@@ -56,12 +55,7 @@ TEST(SteadyGeometryInversion, HoldsTightCirclesAtSpeed) {
   for (int k = 0; k < property_cases(16); ++k) {
     const auto seed = case_seed(k);
     Random random(seed);
-    VehicleParameters car;
-    car.mass_kg = random.uniform(900.0, 2500.0);
-    car.cg_to_front_axle_m = random.uniform(1.0, 1.6);
-    car.cg_to_rear_axle_m = random.uniform(1.0, 1.6);
-    // The inversion's model: two point masses on the axles (docs/vehicle_dynamics.md, section 3).
-    car.yaw_inertia_kgm2 = car.mass_kg * car.cg_to_front_axle_m * car.cg_to_rear_axle_m;
+    VehicleParameters car = random_two_mass_car(random);
     car.front_tire.stiffness_factor_b = random.uniform(12.0, 20.0);
     car.rear_tire.stiffness_factor_b = random.uniform(12.0, 20.0);
     const double wheelbase = car.wheelbase_m();
