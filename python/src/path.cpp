@@ -133,6 +133,13 @@ void bind_path(py::module_& m) {
           },
           "the steps of the curvature's slope at line, arc and clothoid joints (s [m], before, "
           "after [1/m^2]): the planned kinks' input (docs/feedforward.md, section 2b)")
+      .def_property_readonly("max_abs_curvature_kink", &Path::max_abs_curvature_kink,
+                             "the largest step of curvature_kinks [1/m^2], 0 without kinks")
+      .def_property_readonly(
+          "max_abs_spline_kink", &Path::max_abs_spline_kink,
+          "on a path with spline pieces: the largest step of the curvature's slope across 2 m, "
+          "read through the spline's ringing (docs/feedforward.md, 'Kinks a spline spreads') "
+          "[1/m^2]; 0 on lines, arcs and clothoids")
       .def_property_readonly("curvature_sample_spacing_m", &Path::curvature_sample_spacing_m,
                              "spacing of the curvature samples the feedforward's preview reads [m]")
       .def_property_readonly(
