@@ -373,7 +373,8 @@ double Path::spline_kink(const std::vector<double>& samples, double spacing, dou
   // curvatures alternate about the road's, decaying by 2 - sqrt(3) per knot, so the slope
   // right after a kink overshoots its step (a 2.5 m clothoid sampled every metre reads 1.21
   // times its step). The mean over one knot spacing (a trapezoid over the samples) cancels the
-  // alternation before the slopes are compared.
+  // alternation before the slopes are compared. It is clamped at the samples' ends (a closed
+  // path's joint is read as an open one's, within a knot spacing of it).
   const long half = std::clamp(std::lround(0.5 * knot_spacing / spacing), 0L, 2 * spread);
   auto knot_mean = [&](long i) {
     double sum = 0.0, weight = 0.0;

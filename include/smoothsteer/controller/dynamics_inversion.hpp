@@ -68,10 +68,12 @@ struct DynamicsInversion {
   //! The gain for a course curvature `curvature` [1/m] on a car of wheelbase L: `gain` with the
   //! stationary steering's small-angle part replaced by the single-track model's exact geometry
   //! (docs/vehicle_dynamics.md, section 3, "Large steering angles"). The chain steers
-  //! atan(L kappa_chain); the car needs delta = alpha_f + atan2(L kappa - sin beta_r, cos beta_r)
+  //! atan(L kappa_chain); the car needs
+  //! delta = alpha_f / cos(delta) + atan2(L kappa - sin beta_r, cos beta_r)
   //! with the slips alpha_f = K_f v^2 kappa, beta_r = K_r v^2 kappa, so that
   //! kappa_chain = tan(delta) / L, where the linear inversion gives kappa + (alpha_f - beta_r) / L.
-  //! `gain` itself without slips (the inversion off, reversing) or at kappa = 0.
+  //! `gain` itself without slips (the inversion off, reversing) or at kappa = 0. Five
+  //! transcendental calls, no allocation.
   double gain_at(double curvature, double wheelbase_m) const noexcept {
     if ((front_slip_m == 0.0 && rear_slip_m == 0.0) || curvature == 0.0) return gain;
     const double front_slip = front_slip_m * curvature;
