@@ -16,7 +16,7 @@ void DisturbanceEstimator::update(const ControllerInput& input, const Context& c
     if (distance > 1e-6) {
       // The steering in effect over the last period: issued `actuator_delay_s` earlier, plus
       // the lag of the tires' slip that the single-track inversion previews (lag / g metres).
-      const double delay = context.delay_s + context.slip_lag_m / input.speed_mps;
+      const double delay = context.delay_s + context.dynamics.slip_lag_m / input.speed_mps;
       const auto age = std::min<std::size_t>(
           commands.count() - 1, static_cast<std::size_t>(std::lround(delay / input.period_s)));
       const double commanded = std::tan(commands.issued(age).steering_rad) / context.wheelbase_m;

@@ -90,7 +90,6 @@ void LeadWheelController::estimate_disturbance(const ControllerInput& input) noe
       .length_m = parameters_.disturbance_estimation.length_m,
       .direction = direction_,
       .delay_s = prediction_horizon_s(input),
-      .slip_lag_m = dynamics_.slip_lag_m,
       .dynamics = dynamics_,
       .wheelbase_m = parameters_.chain.vehicle_wheelbase_m,
       .feedforward_bound = parameters_.feedforward_curvature_bound()};

@@ -376,19 +376,22 @@ double Path::spline_kink(const std::vector<double>& samples, double spacing, dou
   // alternation before the slopes are compared. It is clamped at the samples' ends (a closed
   // path's joint is read as an open one's, within a knot spacing of it).
   const long half = std::clamp(std::lround(0.5 * knot_spacing / spacing), 0L, 2 * spread);
-  auto knot_mean = [&](long i) {
+  std::vector<double> knot_mean(samples.size());
+  for (long i = 0; i < count; ++i) {
     double sum = 0.0, weight = 0.0;
     for (long j = -half; j <= half; ++j) {
       const double w = (half > 0 && (j == -half || j == half)) ? 0.5 : 1.0;
       sum += w * samples[static_cast<std::size_t>(std::clamp(i + j, 0L, count - 1))];
       weight += w;
     }
-    return sum / weight;
-  };
+    knot_mean[static_cast<std::size_t>(i)] = sum / weight;
+  }
   double largest = 0.0;
   for (long i = skip; i + spread + 1 < count - skip; ++i) {
-    const double before = knot_mean(i + 1) - knot_mean(i);
-    const double after = knot_mean(i + spread + 1) - knot_mean(i + spread);
+    const auto at = static_cast<std::size_t>(i);
+    const auto ahead = static_cast<std::size_t>(i + spread);
+    const double before = knot_mean[at + 1] - knot_mean[at];
+    const double after = knot_mean[ahead + 1] - knot_mean[ahead];
     largest = std::max(largest, std::abs(after - before) / spacing);
   }
   return largest;

@@ -1,5 +1,5 @@
 // Path::max_abs_spline_kink() on a road sampled by a planner: a line, a clothoid, an arc, a
-// clothoid back and a line, sampled at 0.5-2 m from a random phase and interpolated. The spline
+// clothoid back and a line, sampled at 0.5-1.25 m from a random phase and interpolated. The spline
 // rings after each kink of the road's curvature (its knots' curvatures alternate about the
 // road's); the measure reads the kink's step through that ringing.
 

@@ -24,8 +24,7 @@ class DisturbanceEstimator {
     double length_m = 0.0;           //!< low-pass length [m]
     double direction = 1.0;          //!< +1 forwards: the estimate learns only then
     double delay_s = 0.0;            //!< the delay compensation's delay [s]
-    double slip_lag_m = 0.0;         //!< the single-track inversion's slip lag [m]
-    DynamicsInversion dynamics;      //!< the single-track inversion at this speed
+    DynamicsInversion dynamics;      //!< the single-track inversion at this speed (its slip lag)
     double wheelbase_m = 1.0;        //!< lambda_veh
     double feedforward_bound = 0.0;  //!< kbar_ff: the estimate stays within it
   };
