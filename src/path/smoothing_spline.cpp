@@ -36,6 +36,16 @@ constexpr std::size_t end_extension_points = 40;
 //! How many waypoints from each end fitted_end() reads: 20 m at a planner's 1 m spacing.
 constexpr std::size_t end_fit_points = 21;
 
+//! The largest heading change of the road a least-squares cubic across an end's waypoints is
+//! asked to follow [rad]. A cubic in the chord's frame keeps an arc's tangent at the end over a
+//! small turn; across a tight corner (a 12 m hairpin turns 1.7 rad in 20 m) its tangent is off
+//! by tenths of a radian, and the mirror then bends the fit there (0.2 1/m of curvature error
+//! on a parking bay's 5 m radius jittered by 5 mm).
+constexpr double end_fit_turn_rad = 0.25;
+//! The fewest waypoints an end's cubic reads (7 m at a planner's 1 m spacing): fewer would let
+//! the jitter, not the road, set the end's tangent.
+constexpr std::size_t end_fit_least_points = 8;
+
 //! The knots of one fit: the smoothed points and their second derivatives.
 struct SmoothingFit {
   std::vector<Vec2> knot_points;
@@ -177,13 +187,29 @@ struct EndFrame {
   Vec2 tangent;
 };
 
+//! How many waypoints from `ordered(0)` on the end's cubic reads: end_fit_points, or fewer where
+//! the road turns more than end_fit_turn_rad from its heading at the end within them (headings
+//! of chords two waypoints long, which the jitter moves little), but at least
+//! end_fit_least_points.
+template <class Ordered>
+std::size_t end_fit_count(std::size_t count, Ordered ordered) {
+  const std::size_t most = std::min(count, end_fit_points);
+  if (most <= end_fit_least_points) return most;
+  const Vec2 first = ordered(2) - ordered(0);
+  for (std::size_t i = end_fit_least_points; i < most; ++i) {
+    const Vec2 chord = ordered(i) - ordered(i - 2);
+    if (std::abs(std::atan2(cross(first, chord), dot(first, chord))) > end_fit_turn_rad) return i;
+  }
+  return most;
+}
+
 //! The end of `waypoints` at `ordered(0)`: a least-squares cubic b(a) through the first
-//! end_fit_points of them, in the frame of their chord (a along it, b to its left), at a = 0.
+//! end_fit_count() of them, in the frame of their chord (a along it, b to its left), at a = 0.
 //! It averages the jitter out of the end's point and tangent, and a cubic keeps an arc's shape
 //! over the span (a road's radius, not the noise, decides how it bends there).
 template <class Ordered>
 EndFrame fitted_end(std::size_t count, Ordered ordered) {
-  const std::size_t m = std::min(count, end_fit_points);
+  const std::size_t m = end_fit_count(count, ordered);
   const Vec2 origin = ordered(0);
   const Vec2 chord = ordered(m - 1) - origin;
   const Vec2 along = (1.0 / norm(chord)) * chord;

@@ -16,6 +16,7 @@
 
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/path_builder.hpp"
 #include "support/property.hpp"
 
 namespace smoothsteer {
@@ -155,7 +156,7 @@ TEST(PathSmoothing, FiveMetresIntoAJitteredWindowTheCurvatureIsTheArcs) {
                                   std::to_string(radius) + " m, sigma " + std::to_string(sigma) +
                                   " m, s = " + std::to_string(at) + " m, curvature error " +
                                   std::to_string(error) + " 1/m";
-      EXPECT_LE(std::abs(error), 0.15 / radius + 0.05 * sigma) << context;
+      EXPECT_LE(std::abs(error), 0.15 / radius + 0.08 * sigma) << context;
       sum_relative += error * radius * direction;
       worst_relative = std::max(worst_relative, std::abs(error) * radius);
     }
@@ -164,6 +165,58 @@ TEST(PathSmoothing, FiveMetresIntoAJitteredWindowTheCurvatureIsTheArcs) {
   EXPECT_LE(std::abs(mean_relative), 0.05);
   std::printf("5 m into the window: mean relative curvature error %.4f, worst %.3f\n",
               mean_relative, worst_relative);
+}
+
+// A window through a tight corner (a parking bay, a hairpin: radius 5-15 m, turning 1.5-2.8 rad
+// between clothoids, after a straight of 0-8 m; sigma 2-20 mm, 1 m apart): over the first 12 m,
+// where a planner's window puts the car, the fit's curvature stays the road's. A cubic through
+// the end's 21 waypoints cannot follow such a turn; its tangent, mirrored, bent the fit there
+// (400 cases: mean relative error 0.21, worst 11; with the end's span limited to the turn 0.09
+// and 0.17). Per case within 0.25 / R on average over the 12 m, over the cases within 0.12.
+TEST(PathSmoothing, AWindowThroughATightCornerKeepsItsCurvature) {
+  const int cases = testing::property_cases(40);
+  double sum_relative = 0.0, worst_relative = 0.0;
+  for (int i = 0; i < cases; ++i) {
+    const std::uint64_t seed = testing::case_seed(i);
+    testing::Random random(seed + 57);
+    const double radius = random.uniform(5.0, 15.0);
+    const double sigma = random.uniform(0.002, 0.02);
+    const double turn = random.uniform(1.5, 2.8) * (random.uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+    const double lead = random.uniform(0.0, 8.0);
+    const double transition = 0.25 * radius;  // clothoids of radius / 4 (A = R / 2)
+    PathBuilder builder({0.0, 0.0}, 0.0);
+    if (lead > 0.1) builder.line(lead);
+    const Path road = builder.clothoid(transition, std::copysign(1.0 / radius, turn))
+                          .arc(radius, turn - std::copysign(transition / radius, turn))
+                          .clothoid(transition, 0.0)
+                          .line(20.0)
+                          .build();
+    std::normal_distribution<double> jitter(0.0, sigma);
+    std::vector<Vec2> samples;
+    for (double s = 0.0; s <= road.length(); s += 1.0) {
+      samples.push_back(road.evaluate(s).position +
+                        Vec2{jitter(random.engine()), jitter(random.engine())});
+    }
+    const Path smoothed = Path::from_waypoints(samples, WaypointSmoothing{sigma * std::sqrt(2.0)});
+    double sum_error = 0.0;
+    int count = 0;
+    for (double s = 0.0; s <= 12.0; s += 0.25, ++count) {
+      const PathPoint fitted = smoothed.evaluate(s);
+      sum_error += std::abs(fitted.curvature - road.project(fitted.position).curvature);
+    }
+    const double relative = sum_error / count * radius;
+    EXPECT_LE(relative, 0.25) << testing::seed_message(seed) << "; radius " << radius << " m, turn "
+                              << turn << " rad, straight " << lead << " m, sigma " << sigma
+                              << " m: mean |curvature error| over the first 12 m " << relative
+                              << " / R";
+    sum_relative += relative;
+    worst_relative = std::max(worst_relative, relative);
+  }
+  EXPECT_LE(sum_relative / cases, 0.12);
+  std::printf(
+      "tight corner, first 12 m of the window: mean relative curvature error %.4f, "
+      "worst %.3f\n",
+      sum_relative / cases, worst_relative);
 }
 
 // A fit's tolerance beyond the least-squares line's residual gives that line: samples of a
