@@ -74,9 +74,13 @@ double GovernorStage::blend(const ControllerParameters& parameters, const LeadWh
   // variable leaves its boundary layer, fully at twice its width, and keeps the lead until
   // the error is gone: its share decays over SteeringGovernor::far_law_memory_m, so that the
   // slow near-path surface does not finish an engagement (docs/governor.md).
-  const double layer = parameters.law.boundary_layer;
-  // Stiff on steady stretches, the certified layer while the path moves (near_law_layer.hpp).
-  if (first_substep) near_layer_.observe(error.path_curvature, travelled_m_, speed_magnitude_);
+  // Stiff on steady stretches, the certified layer while the path moves, and on a tight corner
+  // without a reversal at most NearLawLayer::single_corner_layer (near_law_layer.hpp).
+  if (first_substep) {
+    near_layer_.observe(error.path_curvature, travelled_m_, speed_magnitude_);
+    near_layer_.observe_ahead(error.ahead, travelled_m_);
+  }
+  const double layer = near_layer_.certified_layer(parameters.law.boundary_layer);
   const double near_layer = near_layer_.layer(layer, near_bound_, speed_magnitude_);
   const SwitchingResult near = dubins_switching_law(error.lateral_error_m, error.relative_heading,
                                                     near_bound_, near_layer, parameters);

@@ -8,6 +8,7 @@
 #include "smoothsteer/controller/chain_stepper.hpp"
 #include "smoothsteer/controller/feedforward_split.hpp"
 #include "smoothsteer/controller/lead_wheel_controller.hpp"
+#include "smoothsteer/controller/near_law_layer.hpp"
 #include "smoothsteer/controller/steering_governor.hpp"
 #include "smoothsteer/math/angles.hpp"
 
@@ -125,12 +126,19 @@ double LeadWheelController::substep(const PeriodPlan& plan, bool first_substep,
   LeadWheelState lead =
       evaluate_lead_wheel(stepper.position(), stepper.heading(), first_substep, authority.bound,
                           authority.layer, governor_.feedforward_rate());
+  const NearLawLayer::PathAhead ahead =
+      first_substep && governor_.governed()
+          ? NearLawLayer::path_ahead(*path_, lead.projection.arc_length_m,
+                                     NearLawLayer::reversal_lookahead_s * plan.speed_magnitude,
+                                     plan.speed_magnitude)
+          : NearLawLayer::PathAhead{};
   lead.law.curvature = governor_.blend(parameters_,
                                        {.path_curvature = lead.projection.curvature,
                                         .lateral_error_m = lead.lateral_error,
                                         .relative_heading = lead.relative_heading,
                                         .far_law_curvature = lead.law.curvature,
-                                        .slip_lag_m = dynamics_.slip_lag_m},
+                                        .slip_lag_m = dynamics_.slip_lag_m,
+                                        .ahead = ahead},
                                        first_substep);
   if (first_substep) first = lead;
   // Stage 4, the split: kappa_ff moves towards its target at L_ff, linearly within the

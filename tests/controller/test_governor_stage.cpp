@@ -172,19 +172,25 @@ TEST(GovernorStage, AuthorityBlendAndClampKeepTheirBounds) {
 TEST(GovernorStage, AnErrorBeyondTheHandOverCallsTheFarLaw) {
   // With the near law's sliding variable kept inside its layer (a heading that points the lead
   // wheel back along the near law's own surface), the far law's share follows the lead wheel's
-  // error alone: 0 within e_h = max(epsilon, share (K_f + K_r) v^2 / g), 1 from 2 e_h on.
+  // error alone: 0 within e_h = max(epsilon, share (K_f + K_r) v^2 / g), 1 from 2 e_h on, with
+  // epsilon the certified layer on a gentle path and at most NearLawLayer::single_corner_layer
+  // on a tight corner without a reversal.
   const int cases = property_cases(100);
   for (int index = 0; index < cases; ++index) {
     const auto seed = case_seed(index);
     Random random(seed + 1013);
     const ControllerParameters p = governed(random, random.coin() ? 2 : 1);
     const double speed = random.uniform(0.5, 30.0), slip_lag = random.uniform(0.0, 4.0);
-    const double layer = p.law.boundary_layer;
+    const bool tight_corner = random.coin();
+    const double layer = tight_corner
+                             ? std::min(p.law.boundary_layer, NearLawLayer::single_corner_layer)
+                             : p.law.boundary_layer;
     const double handover = std::max(layer, SteeringGovernor::far_law_slip_lag_share * slip_lag);
     const double ratio = random.uniform(0.0, 3.0);
     const double e = (random.coin() ? 1.0 : -1.0) * ratio * handover;
     std::ostringstream text;
-    text << describe(p) << " v=" << speed << " slip_lag=" << slip_lag << " e=" << e;
+    text << describe(p) << " v=" << speed << " slip_lag=" << slip_lag << " e=" << e
+         << " tight_corner=" << tight_corner;
     SCOPED_TRACE(seed_message(seed) + " " + text.str());
     GovernorStage stage;
     stage.restart(0.0);
@@ -205,7 +211,11 @@ TEST(GovernorStage, AnErrorBeyondTheHandOverCallsTheFarLaw) {
     const double psi = 0.5 * (low + high);
     const double sigma = dubins_switching_law(e, psi, near_bound, layer, p).sliding_variable;
     if (std::abs(sigma) > 0.5 * layer) continue;  // the surface has no such heading here
-    (void)stage.blend(p, {.lateral_error_m = e, .relative_heading = psi, .slip_lag_m = slip_lag},
+    (void)stage.blend(p,
+                      {.lateral_error_m = e,
+                       .relative_heading = psi,
+                       .slip_lag_m = slip_lag,
+                       .ahead = {.reversal = false, .gentle = !tight_corner}},
                       true);
     const double expected = std::clamp(ratio - 1.0, 0.0, 1.0);
     EXPECT_NEAR(stage.far_share(), expected, 1e-9);

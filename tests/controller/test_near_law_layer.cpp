@@ -1,7 +1,8 @@
 // The near law's boundary layer under the governor (near_law_layer.hpp): the certified layer
 // while the path's curvature moves, the steady law's l kbar_sw / 2 (l = 2 v tau) on steady
 // stretches (tau growing with the speed above 13.3 m/s), never wider than the certified one, and
-// back to steady once the activity is forgotten.
+// back to steady once the activity is forgotten; the certified layer only within reach of a
+// reversal of the path's curvature, at most the single-corner layer elsewhere.
 
 #include "smoothsteer/controller/near_law_layer.hpp"
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <string>
 
+#include "smoothsteer/path/path_builder.hpp"
 #include "support/property.hpp"
 
 namespace smoothsteer {
@@ -69,6 +71,68 @@ TEST(NearLawLayer, StaysBetweenTheSteadyAndTheCertifiedLayer) {
       ASSERT_GE(epsilon, steady_layer(certified, bound, v) - 1e-15);
     }
   }
+}
+
+// A reversal counts where the curvature takes both signs beyond 1 / 500 m within the reach: an
+// S-bend's second arc 30 m ahead does, a hairpin's single arc and a gentle opposite bend do not.
+// A corner is gentle where its lateral acceleration at the speed stays below 3 m/s^2.
+TEST(NearLawLayer, ReadsReversalsAndGentleCornersAhead) {
+  const Path s_bend =
+      PathBuilder({0.0, 0.0}, 0.0).line(20.0).arc(30.0, 0.5).arc(30.0, -0.5).line(50.0).build();
+  const Path hairpin = PathBuilder({0.0, 0.0}, 0.0).line(20.0).arc(12.0, 3.0).line(50.0).build();
+  const Path gentle =
+      PathBuilder({0.0, 0.0}, 0.0).line(20.0).arc(30.0, 0.5).arc(1000.0, -0.02).line(50.0).build();
+  const double v = 10.0;  // 3.3 m/s^2 on a 30 m radius, 8.3 on 12 m
+  EXPECT_TRUE(NearLawLayer::path_ahead(s_bend, 20.0, 30.0, v).reversal);
+  EXPECT_FALSE(NearLawLayer::path_ahead(s_bend, 20.0, 10.0, v).reversal);  // out of reach
+  EXPECT_FALSE(NearLawLayer::path_ahead(s_bend, 55.0, 30.0, v).reversal);  // one arc left
+  EXPECT_FALSE(NearLawLayer::path_ahead(hairpin, 10.0, 60.0, v).reversal);
+  EXPECT_FALSE(NearLawLayer::path_ahead(gentle, 20.0, 60.0, v).reversal);
+  EXPECT_FALSE(NearLawLayer::path_ahead(hairpin, 10.0, 60.0, v).gentle);
+  EXPECT_TRUE(NearLawLayer::path_ahead(hairpin, 10.0, 60.0, 4.0).gentle);  // 1.3 m/s^2
+  EXPECT_TRUE(NearLawLayer::path_ahead(hairpin, 0.0, 15.0, v).gentle);     // the straight only
+  EXPECT_FALSE(NearLawLayer::path_ahead(gentle, 20.0, 60.0, v).gentle);
+  EXPECT_TRUE(NearLawLayer::path_ahead(gentle, 20.0, 60.0, 9.0).gentle);  // 2.7 m/s^2
+}
+
+// The certified layer holds on a gentle path and for reversal_memory_m of travel past the last
+// reversal seen ahead; a tight corner takes at most single_corner_layer until reversal_memory_m
+// past the last period it was seen, unless a reversal is remembered.
+TEST(NearLawLayer, RemembersReversalsAndTightCornersOverTheMemory) {
+  NearLawLayer layer;
+  layer.reset();
+  const double certified = 0.03, step = 0.3;  // 15 m/s at 50 Hz
+  const double single = std::min(certified, NearLawLayer::single_corner_layer);
+  const NearLawLayer::PathAhead gentle{.reversal = false, .gentle = true};
+  const NearLawLayer::PathAhead tight{.reversal = false, .gentle = false};
+  const NearLawLayer::PathAhead reversal{.reversal = true, .gentle = false};
+  EXPECT_EQ(layer.certified_layer(certified), certified);
+  layer.observe_ahead(tight, step);
+  EXPECT_EQ(layer.certified_layer(certified), single);
+  // The corner's exit: stiff while the memory lasts, then the certified layer again.
+  double travelled = 0.0;
+  while (travelled + step <= NearLawLayer::reversal_memory_m - 1e-9) {
+    layer.observe_ahead(gentle, step);
+    travelled += step;
+    EXPECT_EQ(layer.certified_layer(certified), single) << "after " << travelled << " m";
+  }
+  layer.observe_ahead(gentle, 2.0 * step);
+  EXPECT_EQ(layer.certified_layer(certified), certified);
+  // A reversal wins over a tight corner for as long as it is remembered.
+  layer.observe_ahead(reversal, step);
+  EXPECT_EQ(layer.certified_layer(certified), certified);
+  travelled = 0.0;
+  while (travelled + step <= NearLawLayer::reversal_memory_m - 1e-9) {
+    layer.observe_ahead(tight, step);
+    travelled += step;
+    EXPECT_EQ(layer.certified_layer(certified), certified) << "after " << travelled << " m";
+  }
+  layer.observe_ahead(tight, 2.0 * step);
+  EXPECT_EQ(layer.certified_layer(certified), single);
+  // A layer already below the single-corner one stays as it is.
+  EXPECT_EQ(layer.certified_layer(0.005), 0.005);
+  layer.reset();
+  EXPECT_EQ(layer.certified_layer(certified), certified);
 }
 
 }  // namespace

@@ -38,6 +38,9 @@ class GovernorStage {
     double far_law_curvature = 0.0;  //!< the law at the authority() this sub-step gave [1/m]
     //! The single-track inversion's slip lag (K_f + K_r) v^2 / g [m] (dynamics_inversion.hpp).
     double slip_lag_m = 0.0;
+    //! The path within NearLawLayer::reversal_lookahead_s of travel ahead of the lead wheel
+    //! (NearLawLayer::path_ahead; read on the first sub-step only).
+    NearLawLayer::PathAhead ahead{};
   };
 
   //! The chain restarts in stationary cornering at kappa_ff (a reset, a change of direction):

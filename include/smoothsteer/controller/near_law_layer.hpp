@@ -18,9 +18,19 @@
 //! speed above 13.3 m/s. It is never wider than the certified one and the authority stays the
 //! certified kbar_sw, so |kappa_sw| <= kbar_sw as before; the governor holds the car's rate and
 //! acceleration limits on the held command.
+//!
+//! The certified epsilon's softness is what a reversal of the path's curvature asks for (the
+//! lane change's ringing). A tight corner without one ahead or just behind (a hairpin) takes at
+//! most single_corner_layer instead: the block's 0.03 lets the car run wide where the tires'
+//! slip builds up later than the linear model says (the 12 m hairpin at 6 m/s^2: 0.078 ->
+//! 0.050 m), and 0.01 throughout rang in the 15 m/s lane change (0.030 -> 0.052 m;
+//! docs/governor.md, "A tight single corner takes a stiffer layer").
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "smoothsteer/path/path.hpp"
 
 namespace smoothsteer {
 
@@ -47,10 +57,71 @@ class NearLawLayer {
   //! 0.02 m); 5-10 m changed no shipped figure by more than 1 cm.
   static constexpr double activity_memory_m = 10.0;
 
-  //! A new engagement: no memory of the path's activity (the law starts stiff on a steady path).
+  //! How far ahead a reversal of the path's curvature keeps the certified layer [s of travel]:
+  //! the lane change's next lobe is within reach from the start of the one before.
+  static constexpr double reversal_lookahead_s = 3.0;
+  //! How far past the last reversal seen ahead the certified layer stays [m]: the slip's
+  //! transient of the last lobe (a stiff law switched on in the last lobe rang: 15 m/s lane
+  //! change 0.046 m; 20 and 40 m gave the same figures).
+  static constexpr double reversal_memory_m = 20.0;
+  //! Curvature below which a sign does not count as the path turning that way [1/m] (a 500 m
+  //! radius).
+  static constexpr double reversal_curvature_per_m = 0.002;
+  //! The near law's layer on a corner without a reversal: ControllerParameters' default
+  //! boundary layer.
+  static constexpr double single_corner_layer = 0.01;
+  //! The lateral acceleration from which a corner takes single_corner_layer [m/s^2]: where the
+  //! tires' slip gradient has grown by a tenth (the passenger car's Magic Formula: 1.1x at
+  //! 3 m/s^2, 1.5x at 6 m/s^2). Below it the path's own noise decides more than the tires (a
+  //! planner's windows jittered by 2 cm: the rural road at 22 m/s 0.03 -> 0.08 m with the stiff
+  //! layer on its gentle bends).
+  static constexpr double single_corner_lateral_acceleration_mps2 = 3.0;
+
+  //! What the path within a reach ahead of the lead wheel asks of the near law's layer.
+  struct PathAhead {
+    bool reversal = false;  //!< the curvature takes both signs beyond reversal_curvature_per_m
+    bool gentle = false;    //!< its lateral acceleration stays below the single corner's
+  };
+  //! The path within `reach_m` ahead of `arc_length_m` at `speed_mps`, read from its curvature
+  //! samples at 13 points (O(1) each).
+  static PathAhead path_ahead(const Path& path, double arc_length_m, double reach_m,
+                              double speed_mps) noexcept {
+    const double spacing = path.curvature_sample_spacing_m();
+    bool left = false, right = false;
+    double largest = 0.0;
+    for (int i = 0; i <= 12; ++i) {
+      const double s = arc_length_m + reach_m * static_cast<double>(i) / 12.0;
+      const double curvature = path.curvature_sample(std::lround(s / spacing));
+      left = left || curvature > reversal_curvature_per_m;
+      right = right || curvature < -reversal_curvature_per_m;
+      largest = std::max(largest, std::abs(curvature));
+    }
+    return {.reversal = left && right,
+            .gentle = speed_mps * speed_mps * largest < single_corner_lateral_acceleration_mps2};
+  }
+
+  //! A new engagement: no memory of the path's activity (the law starts stiff on a steady path)
+  //! or of its reversals.
   void reset() noexcept {
     activity_mps3_ = 0.0;
     has_previous_ = false;
+    travelled_m_ = 0.0;
+    certified_until_m_ = -std::numeric_limits<double>::infinity();
+    tight_until_m_ = -std::numeric_limits<double>::infinity();
+  }
+  //! Once per control period, with observe(): the path ahead (path_ahead()). Both a reversal
+  //! and a tight corner are remembered for reversal_memory_m of travel after they leave the
+  //! reach (the transient of the last lobe, or of a corner's exit).
+  void observe_ahead(const PathAhead& ahead, double travelled_m) noexcept {
+    travelled_m_ += travelled_m;
+    if (ahead.reversal) certified_until_m_ = travelled_m_ + reversal_memory_m;
+    if (!ahead.gentle) tight_until_m_ = travelled_m_ + reversal_memory_m;
+  }
+  //! The layer the near law is certified with here: the certified epsilon within reach of a
+  //! reversal or on a gentle path, at most single_corner_layer on a tight corner.
+  double certified_layer(double certified) const noexcept {
+    const bool tight = travelled_m_ > certified_until_m_ && travelled_m_ <= tight_until_m_;
+    return tight ? std::min(certified, single_corner_layer) : certified;
   }
   //! Once per control period: the path's curvature at the lead wheel's closest point [1/m]
   //! (the path's own, free of the sensors' noise) after travelling travelled_m at speed_mps.
@@ -82,6 +153,9 @@ class NearLawLayer {
   double activity_mps3_ = 0.0;
   double previous_curvature_ = 0.0;
   bool has_previous_ = false;
+  double travelled_m_ = 0.0;  //!< since the engagement [m]
+  double certified_until_m_ = -std::numeric_limits<double>::infinity();
+  double tight_until_m_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace smoothsteer
