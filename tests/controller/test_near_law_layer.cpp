@@ -106,29 +106,28 @@ TEST(NearLawLayer, RemembersReversalsAndTightCornersOverTheMemory) {
   const NearLawLayer::PathAhead gentle{.reversal = false, .gentle = true};
   const NearLawLayer::PathAhead tight{.reversal = false, .gentle = false};
   const NearLawLayer::PathAhead reversal{.reversal = true, .gentle = false};
+  // Travels the memory's length seeing `ahead` every step, expecting `held` throughout, then one
+  // step beyond it, expecting `after`.
+  const auto through_the_memory = [&](const NearLawLayer::PathAhead& ahead, double held,
+                                      double after) {
+    double travelled = 0.0;
+    while (travelled + step <= NearLawLayer::reversal_memory_m - 1e-9) {
+      layer.observe_ahead(ahead, step);
+      travelled += step;
+      EXPECT_EQ(layer.certified_layer(certified), held) << "after " << travelled << " m";
+    }
+    layer.observe_ahead(ahead, 2.0 * step);
+    EXPECT_EQ(layer.certified_layer(certified), after);
+  };
   EXPECT_EQ(layer.certified_layer(certified), certified);
   layer.observe_ahead(tight, step);
   EXPECT_EQ(layer.certified_layer(certified), single);
   // The corner's exit: stiff while the memory lasts, then the certified layer again.
-  double travelled = 0.0;
-  while (travelled + step <= NearLawLayer::reversal_memory_m - 1e-9) {
-    layer.observe_ahead(gentle, step);
-    travelled += step;
-    EXPECT_EQ(layer.certified_layer(certified), single) << "after " << travelled << " m";
-  }
-  layer.observe_ahead(gentle, 2.0 * step);
-  EXPECT_EQ(layer.certified_layer(certified), certified);
+  through_the_memory(gentle, single, certified);
   // A reversal wins over a tight corner for as long as it is remembered.
   layer.observe_ahead(reversal, step);
   EXPECT_EQ(layer.certified_layer(certified), certified);
-  travelled = 0.0;
-  while (travelled + step <= NearLawLayer::reversal_memory_m - 1e-9) {
-    layer.observe_ahead(tight, step);
-    travelled += step;
-    EXPECT_EQ(layer.certified_layer(certified), certified) << "after " << travelled << " m";
-  }
-  layer.observe_ahead(tight, 2.0 * step);
-  EXPECT_EQ(layer.certified_layer(certified), single);
+  through_the_memory(tight, certified, single);
   // A layer already below the single-corner one stays as it is.
   EXPECT_EQ(layer.certified_layer(0.005), 0.005);
   layer.reset();
