@@ -18,6 +18,7 @@ from ._smoothsteer import (  # noqa: F401
     ActuatorInversion,
     ActuatorParameters,
     ChainParameters,
+    CourseErrorParameters,
     DelayCompensation,
     DisturbanceEstimation,
     DrivingDomain,

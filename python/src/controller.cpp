@@ -141,11 +141,13 @@ py::list field_rows() {
 //! One update() call; a non-ok status raises ControllerError naming the bad input.
 ControllerOutput update(SteeringController& controller, const py::object& position,
                         double heading_rad, double speed_mps, double acceleration_mps2,
-                        double period_s, double rear_axle_side_slip_rad, double pose_age_s) {
+                        double period_s, double rear_axle_side_slip_rad, double pose_age_s,
+                        double slip_gradient_scale) {
   ControllerInput input{to_vec2(position, "rear_axle_position"), heading_rad, speed_mps,
                         acceleration_mps2, period_s};
   input.rear_axle_side_slip_rad = rear_axle_side_slip_rad;
   input.pose_age_s = pose_age_s;
+  input.slip_gradient_scale = slip_gradient_scale;
   ControllerOutput output;
   const Status status = controller.update(input, output);
   if (status != Status::ok) {
@@ -381,9 +383,11 @@ void bind_controller(py::module_& m) {
       .def("update", &update, py::arg("rear_axle_position"), py::arg("heading_rad"),
            py::arg("speed_mps"), py::arg("acceleration_mps2") = 0.0, py::arg("period_s") = 0.02,
            py::arg("rear_axle_side_slip_rad") = 0.0, py::arg("pose_age_s") = 0.0,
+           py::arg("slip_gradient_scale") = 1.0,
            "One control period: rear axle (x, y) [m], heading [rad], signed speed [m/s], dv/dt "
-           "[m/s^2], period [s], the rear axle's side slip beta_r [rad] and how old the pose is "
-           "[s] (0 <= pose_age_s <= 0.5). Returns a ControllerOutput; raises ControllerError on "
+           "[m/s^2], period [s], the rear axle's side slip beta_r [rad], how old the pose is "
+           "[s] (0 <= pose_age_s <= 0.5) and the factor on the single-track inversion's slip "
+           "gradients (0.5 ... 2). Returns a ControllerOutput; raises ControllerError on "
            "an error status (e.g. a NaN input).")
       .def(
           "reset",

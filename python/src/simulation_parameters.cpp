@@ -70,7 +70,9 @@ void bind_simulation_parameters(py::module_& m) {
                      "the observer's steering-offset bound (0: off)")
       .def_readwrite("steering_offset_process_std_radps", &E::steering_offset_process_std_radps)
       .def_readwrite("compensate_steering_offset", &E::compensate_steering_offset,
-                     "the held command makes up for the learned offset");
+                     "the held command makes up for the learned offset")
+      .def_readwrite("estimate_course_error", &E::estimate_course_error,
+                     "the system learns the slip's scale and a course bias from the pose");
 
   using P = SimulationParameters;
   py::class_<P>(m, "SimulationParameters",

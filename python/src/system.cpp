@@ -112,6 +112,24 @@ void bind_vehicle(py::module_& m) {
       .def_readwrite("uncorrected_untrusted_s", &G::uncorrected_untrusted_s)
       .def_readwrite("uncorrected_restart_s", &G::uncorrected_restart_s);
 
+  using CE = CourseErrorParameters;
+  py::class_<CE>(m, "CourseErrorParameters",
+                 "The course error estimator: the slip's scale and a course bias learned from "
+                 "the pose (docs/steering_system.md, 'Course error'); keyword arguments.")
+      .def(py::init(&from_keywords<CE>))
+      .def_readwrite("position_noise_std_m", &CE::position_noise_std_m)
+      .def_readwrite("heading_noise_std_rad", &CE::heading_noise_std_rad)
+      .def_readwrite("initial_slip_error_std", &CE::initial_slip_error_std)
+      .def_readwrite("slip_error_process_std", &CE::slip_error_process_std, "[1/sqrt(s)]")
+      .def_readwrite("initial_course_bias_std_rad", &CE::initial_course_bias_std_rad)
+      .def_readwrite("course_bias_process_std_radps", &CE::course_bias_process_std_radps)
+      .def_readwrite("max_slip_error", &CE::max_slip_error)
+      .def_readwrite("max_course_bias_rad", &CE::max_course_bias_rad)
+      .def_readwrite("min_speed_mps", &CE::min_speed_mps)
+      .def_readwrite("max_lateral_acceleration_mps2", &CE::max_lateral_acceleration_mps2)
+      .def_readwrite("max_innovation_sigmas", &CE::max_innovation_sigmas)
+      .def("validate", &CE::validate);
+
   using O = SideSlipObserverParameters;
   py::class_<O>(m, "SideSlipObserverParameters",
                 "The side-slip observer's model and sensor noise; keyword arguments.")
@@ -179,6 +197,10 @@ void bind_outputs(py::module_& m) {
       .def_readonly("yaw_rate_radps", &D::yaw_rate_radps, "observer's filtered r")
       .def_readonly("steering_offset_rad", &D::steering_offset_rad,
                     "observer's steering offset: road wheels minus measured angle")
+      .def_readonly("slip_error", &D::slip_error,
+                    "course error estimator: the slip's relative error a (beta_r and the slip "
+                    "gradients times 1 + a)")
+      .def_readonly("course_bias_rad", &D::course_bias_rad, "course error estimator: c [rad]")
       .def_readonly("observer_status", &D::observer_status)
       .def_readonly("estimate_trusted", &D::estimate_trusted,
                     "False: saturated or uncorrected; the law got beta_r = 0")
@@ -258,6 +280,8 @@ void bind_system(py::module_& m) {
       .def_readwrite("actuator", &P::actuator,
                      "ActuatorParameters the command is held through (None: no offset "
                      "compensation)")
+      .def_readwrite("course_error", &P::course_error,
+                     "CourseErrorParameters of the course error estimator (None: off)")
       .def_readwrite("compensate_steering_offset", &P::compensate_steering_offset,
                      "the held command makes up for the observer's steering offset")
       .def_static("from_vehicle", &P::from_vehicle, py::arg("vehicle"),
@@ -321,6 +345,9 @@ void bind_system(py::module_& m) {
            "Returns a SteeringSystemOutput; raises ControllerError on an error status.")
       .def("forget_steering_offset", &SteeringSystem::forget_steering_offset,
            "The observer's steering offset back to 0 (reset() keeps it)")
+      .def("forget_course_error", &SteeringSystem::forget_course_error,
+           "The course error estimator's slip error and course bias back to 0 (reset() keeps "
+           "them)")
       .def(
           "reset",
           [](SteeringSystem& system, double angle) {

@@ -124,6 +124,7 @@ BOUND_STRUCTS = [
     ("tuning/vehicle_steering_system.hpp", "VehicleDescription", "VehicleDescription", []),
     ("system/steering_system.hpp", "SteeringSystemParameters", "SteeringSystemParameters", []),
     ("system/driving_domain.hpp", "DrivingDomain", "DrivingDomain", []),
+    ("system/course_error_estimator.hpp", "CourseErrorParameters", "CourseErrorParameters", []),
     ("vehicle/side_slip_observer.hpp", "SideSlipObserverParameters",
      "SideSlipObserverParameters", []),
     ("vehicle/sensor_fault_gate.hpp", "SideSlipFaultGate", "SideSlipFaultGate", []),
@@ -207,3 +208,25 @@ def test_any_controller_can_be_composed():
     out = system.update((41.0, 0.0), math.pi / 2, 8.0, rear_axle_side_slip_rad=0.01)
     assert out.side_slip.rear_axle_side_slip_rad == 0.01
     assert out.active_limit_names == ss.describe_active_limits(out.active_limits)
+
+
+def test_course_error_is_on_by_default_and_reported():
+    """The system learns the slip's scale and a course bias from the pose by default; off with
+    course_error=None; what it learned is in SideSlipDiagnostics; bad parameters name the field."""
+    car = ss.VehicleDescription(vehicle=ss.VehicleParameters.from_file(str(VEHICLE)))
+    path = ss.Path.from_waypoints(np.array(WAYPOINTS, dtype=float))
+    system = ss.make_steering_system(car, path, ss.SteeringSystemOptions(max_speed_mps=12.0))
+    assert system.parameters.course_error is not None
+    # Driving straight along the path, the pose steps beside the course the slip says: c grows.
+    heading = math.atan2(0.0, 1.0)
+    out = None
+    for k in range(200):
+        out = system.update((-5.0 + 10.0 * 0.02 * k, 0.002 * 10.0 * 0.02 * k), heading, 10.0,
+                            yaw_rate_radps=0.0, lateral_acceleration_mps2=0.0)
+    assert out.side_slip.course_bias_rad > 5e-4
+    assert abs(out.side_slip.slip_error) <= ss.CourseErrorParameters().max_slip_error
+    system.forget_course_error()
+    with pytest.raises(ValueError, match="course_error.max_slip_error"):
+        ss.SteeringSystemParameters(course_error=ss.CourseErrorParameters(max_slip_error=0.9)
+                                    ).validate()
+    assert ss.SteeringSystemParameters(course_error=None).course_error is None

@@ -73,7 +73,8 @@ void LeadWheelController::follow_direction_of_travel(double speed_mps) noexcept 
 Pose2 LeadWheelController::predict_law_pose(const ControllerInput& input) noexcept {
   const double wheelbase = parameters_.chain.vehicle_wheelbase_m;
   // Stage 1, the single-track inversion: where and how strongly the feedforward reads the path.
-  dynamics_.update(parameters_.single_track, input.speed_mps, wheelbase, input.acceleration_mps2);
+  dynamics_.update(parameters_.single_track, input.speed_mps, wheelbase, input.acceleration_mps2,
+                   input.slip_gradient_scale);
   // Stage 2, the disturbance estimate, from the course turned since the last period.
   estimate_disturbance(input);
   // Stage 3, the delay prediction: with a known actuator delay and pose age the law acts on the

@@ -35,7 +35,9 @@ const std::array<const char*, trace_column_count>& trace_column_names() noexcept
                                                                      "yaw_rate",
                                                                      "beta_rear",
                                                                      "beta_rear_input",
-                                                                     "kappa_d_estimate"};
+                                                                     "kappa_d_estimate",
+                                                                     "slip_error",
+                                                                     "course_bias"};
   return names;
 }
 
@@ -67,7 +69,9 @@ std::array<double, trace_column_count> trace_row(const TraceSample& s) noexcept 
           s.yaw_rate_radps,
           s.rear_side_slip_rad,
           s.rear_side_slip_input_rad,
-          s.disturbance_curvature};
+          s.disturbance_curvature,
+          s.slip_error,
+          s.course_bias_rad};
 }
 
 }  // namespace smoothsteer::io

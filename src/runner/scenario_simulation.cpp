@@ -128,6 +128,8 @@ void read_side_slip(ConfigSection& sim, SideSlipEstimation& estimation) {
                 "learns no steering offset)");
     }
   }
+  estimation.estimate_course_error =
+      slip.boolean("estimate_course_error", estimation.estimate_course_error);
   slip.finish();
   sim.store("side_slip", slip.resolved());
 }

@@ -284,6 +284,8 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
     sample.side_slip_rad = side_slip_angle(state);
     sample.rear_side_slip_rad = true_rear_slip;
     sample.rear_side_slip_input_rad = output.side_slip.rear_axle_side_slip_rad;
+    sample.slip_error = output.side_slip.slip_error;
+    sample.course_bias_rad = output.side_slip.course_bias_rad;
     sample.lateral_velocity_mps = state.vy_mps;
     sample.yaw_rate_radps = state.yaw_rate_radps;
     if (!all_finite(sample)) {

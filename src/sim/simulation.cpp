@@ -236,6 +236,7 @@ SteeringSystemParameters steering_system_parameters(const SideSlipEstimation& sl
   SteeringSystemParameters system;
   system.actuator = actuator;
   system.compensate_steering_offset = slip.compensate_steering_offset;
+  if (!slip.estimate_course_error) system.course_error.reset();
   system.slip_input = slip.source == SideSlipSource::none    ? SlipInput::kinematic
                       : slip.source == SideSlipSource::truth ? SlipInput::sensor
                                                              : SlipInput::observer;

@@ -47,6 +47,13 @@ std::optional<Violation> SteeringSystemParameters::first_violation() const noexc
       check.include(nested);
     }
   }
+  if (course_error) {
+    if (std::optional<Violation> nested = course_error->first_violation()) {
+      nested->owner = "SteeringSystemParameters";
+      nested->prefix = "course_error.";
+      check.include(nested);
+    }
+  }
   if (domain) {
     if (std::optional<Violation> nested = domain->first_violation()) {
       nested->owner = "SteeringSystemParameters";
@@ -121,6 +128,10 @@ void SteeringSystem::set_up(const SteeringSystemParameters& parameters) {
   }
 }
 
+void SteeringSystem::forget_course_error() noexcept {
+  course_error_.reset();
+}
+
 void SteeringSystem::forget_steering_offset() noexcept {
   if (observer_) observer_->forget_steering_offset();
   if (compensation_) compensation_->forget();
@@ -141,6 +152,7 @@ Status SteeringSystem::reset(double measured_steering_angle_rad) noexcept {
   if (compensation_) compensation_->reset(measured_steering_angle_rad);
   if (observer_) observer_->reset();
   pose_latency_.restart();
+  course_error_.restart();
   controller_output_ = {};
   last_command_rad_ = measured_steering_angle_rad;
   return Status::ok;
@@ -226,11 +238,38 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
         input.period_s, ControllerInput::max_pose_age_s);
     if (input.pose_age_s == 0.0) controller_input_.pose_age_s = estimate;
   }
+  // What the slip estimate gets wrong about the course, from the pose's steps
+  // (course_error_estimator.hpp), on a copy committed with the observer.
+  CourseErrorEstimator course_error = course_error_;
+  if (parameters_.course_error) {
+    const bool new_pose =
+        !(input.rear_axle_position.x == last_position_.x &&
+          input.rear_axle_position.y == last_position_.y && input.heading_rad == last_heading_rad_);
+    // The yaw rate the observer filtered, else the gyro's (NaN when dropped: no bound).
+    const double yaw_rate = observer_ ? slip.yaw_rate_radps : input.yaw_rate_radps;
+    const double correction =
+        course_error.update(*parameters_.course_error,
+                            {.position = input.rear_axle_position,
+                             .heading_rad = input.heading_rad,
+                             .new_pose = new_pose,
+                             .rear_axle_side_slip_rad = controller_input_.rear_axle_side_slip_rad,
+                             .speed_mps = input.speed_mps,
+                             .lateral_acceleration_mps2 = input.speed_mps * yaw_rate,
+                             .period_s = input.period_s,
+                             .pose_age_s = controller_input_.pose_age_s});
+    controller_input_.rear_axle_side_slip_rad =
+        std::clamp(controller_input_.rear_axle_side_slip_rad + correction,
+                   -ControllerInput::max_side_slip_rad, ControllerInput::max_side_slip_rad);
+    controller_input_.slip_gradient_scale = 1.0 + course_error.slip_error();
+    slip.slip_error = course_error.slip_error();
+    slip.course_bias_rad = course_error.course_bias_rad();
+  }
   slip.rear_axle_side_slip_rad = controller_input_.rear_axle_side_slip_rad;
   const Status status = controller_->update(controller_input_, controller_output_);
   if (status != Status::ok) return status;
   if (observer_) std::swap(*observer_, *pending_observer_);
   pose_latency_ = latency;
+  course_error_ = course_error;
   last_position_ = input.rear_axle_position;
   last_heading_rad_ = input.heading_rad;
   const ControllerOutput& command = controller_output_;

@@ -33,28 +33,30 @@ struct ShippedCase {
   double settle_time_s;        //!< the error is measured from here on (the start offset settles)
   double median_rear_error_m;  //!< pinned bound on the median over the seeds of max |e|
   double max_rear_error_m;     //!< pinned bound on max |e| at every seed
-  double max_rear_error_observer_off_m;  //!< the same with the observer's parameters off 20 %
+  //! max |e| with the car 20 % off its vehicle file (mass or cornering stiffness of the plant)
+  double max_rear_error_model_off_m;
 };
 
 // Over noise seeds 1-20 (median, min-max), with the car's disturbance estimate (80 m memory):
 // 0.0081 (0.0059-0.0100), 0.0351 (0.0298-0.0404), 0.278 (0.263-0.302) m on the lane changes,
 // 0.079 (0.070-0.088) m on circle_sections after 8 s and 0.086 (0.085-0.087) m on the hairpin.
-// With the observer off by 20 % (seed 1): the lane change at 19 m/s 0.216-0.315 m, the hairpin
-// 0.075-0.117 m; disturbances_15 0.071-0.103 m from 10 s on. The bounds are the targets
-// (0.03 m) or those figures plus 5-10 %.
+// With the car's mass or cornering stiffness 20 % off its vehicle file (seed 1), the course
+// error estimator learning the slip's scale: the lane changes 0.015-0.030 / 0.063-0.078 /
+// 0.23-0.49 m, circle_sections 0.073-0.097 m after 8 s, the hairpin 0.019-0.127 m; disturbances_15
+// 0.002-0.012 m from 10 s on (the observer alone 20 % off left 7-10 cm there before the course
+// error estimator). The bounds are the targets (0.03 m) or those figures plus 5-10 %.
 const std::vector<ShippedCase> shipped_cases = {
     {"lane_change_10.yaml", 0.0, 0.03, 0.03, 0.04},
-    {"lane_change_15.yaml", 0.0, 0.036, 0.045, 0.08},
-    {"lane_change_19.yaml", 0.0, 0.30, 0.33, 0.40},
-    {"circle_sections.yaml", 8.0, 0.09, 0.10, 0.26},
+    {"lane_change_15.yaml", 0.0, 0.036, 0.045, 0.09},
+    {"lane_change_19.yaml", 0.0, 0.30, 0.33, 0.54},
+    {"circle_sections.yaml", 8.0, 0.09, 0.10, 0.11},
     // A 12 m hairpin entered through a 6 m clothoid at 6 m/s^2: the feedforward moves at the
     // car's rate limit (docs/governor.md, eq. governed_feedforward_rate) and the clothoid's
     // joints are planned kinks (docs/feedforward.md, section 2b).
-    {"hairpin.yaml", 0.0, 0.095, 0.10, 0.13},
+    {"hairpin.yaml", 0.0, 0.095, 0.10, 0.14},
     // A rack misaligned by 0.01 rad and a plant curvature of 0.002 1/m from t = 0 at 15 m/s: the
-    // estimate of docs/feedforward.md section 7 leaves 3-4 mm from 10 s on. With the observer's
-    // model off by 20 % its biased side slip leaves 7-10 cm.
-    {"disturbances_15.yaml", 10.0, 0.01, 0.01, 0.12},
+    // estimate of docs/feedforward.md section 7 leaves 3-4 mm from 10 s on.
+    {"disturbances_15.yaml", 10.0, 0.01, 0.01, 0.02},
 };
 
 constexpr int noise_seeds = 20;
@@ -158,12 +160,14 @@ TEST(ShippedKineticScenarios, SteeringOffsetAndPlantDisturbanceLeaveNoSteadyOffs
   EXPECT_GT(without.max_rear_error_m, 0.3);
 }
 
-TEST(ShippedKineticScenarios, DegradeGracefullyWithTheObserverOffByTwentyPercent) {
+// The car is not its vehicle file: the plant's mass or tires 20 % off what the observer and the
+// feedforward are told (a loaded car, worn or new tires).
+TEST(ShippedKineticScenarios, DegradeGracefullyWithTheCarTwentyPercentOffItsFile) {
   const std::vector<std::string> variants = {
-      "simulation.side_slip.cornering_stiffness_scale=0.8",
-      "simulation.side_slip.cornering_stiffness_scale=1.2",
-      "simulation.side_slip.mass_scale=0.8",
-      "simulation.side_slip.mass_scale=1.2",
+      "simulation.plant_scales.cornering_stiffness=0.8",
+      "simulation.plant_scales.cornering_stiffness=1.2",
+      "simulation.plant_scales.mass=0.8",
+      "simulation.plant_scales.mass=1.2",
   };
   for (const ShippedCase& shipped : shipped_cases) {
     for (const std::string& variant : variants) {
@@ -171,7 +175,7 @@ TEST(ShippedKineticScenarios, DegradeGracefullyWithTheObserverOffByTwentyPercent
       const RunFigures figures = run_figures(shipped, {variant});
       EXPECT_EQ(figures.held_samples_above_limits, 0);
       EXPECT_LT(figures.max_abs_heading_error_rad, spin_heading_error_rad);
-      EXPECT_LE(figures.max_rear_error_m, shipped.max_rear_error_observer_off_m);
+      EXPECT_LE(figures.max_rear_error_m, shipped.max_rear_error_model_off_m);
     }
   }
 }

@@ -277,6 +277,9 @@ TEST(SensorImperfections, TheObserverReadsTheOffsetAngleAndTheBiasedGyro) {
     sim.side_slip.max_steering_offset_rad = max_offset;
     sim.steering_angle_sensor_offset_rad = angle_offset;
     sim.gyro_bias_radps = gyro_bias;
+    // The observer's own estimate: the course error estimator would take a biased slip back
+    // from the pose (CourseError tests).
+    sim.side_slip.estimate_course_error = false;
     testing::ConstantSteering controller(0.0);
     SteeringSystem system(controller,
                           steering_system_parameters(sim.side_slip, car, ActuatorParameters{}));

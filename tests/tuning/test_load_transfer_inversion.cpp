@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "smoothsteer/controller/dynamics_inversion.hpp"
 #include "smoothsteer/tuning/vehicle_steering_system.hpp"
@@ -120,6 +121,38 @@ TEST(LoadTransferInversion, AnAxleKeepsAQuarterOfItsLoad) {
   const double limit = 1.0 + 4.0 * inversion.front_slip_gradient_s2pm * v * v / wheelbase +
                        2.0 * inversion.rear_slip_gradient_s2pm / inversion.rear_load_transfer_s2pm;
   EXPECT_NEAR(hard.gain, limit, 3e-3);
+}
+
+// The course error estimator's factor on the slip gradients (ControllerInput::
+// slip_gradient_scale) is the same inversion with K_f and K_r times it: what a car with that
+// much more slip needs (random cars, speeds, accelerations and factors in [0.5, 2]).
+TEST(LoadTransferInversion, TheSlipGradientScaleIsTheInversionOfScaledGradients) {
+  const int cases = property_cases(100);
+  for (int c = 0; c < cases; ++c) {
+    const std::uint64_t seed = case_seed(c);
+    Random random(seed + 31);
+    const VehicleParameters car = random_two_mass_car(random);
+    const double scale = random.uniform(0.5, 2.0);
+    const double v = random.uniform(-5.0, 40.0), a = random.uniform(-4.0, 3.0);
+    const SingleTrackInversion inversion = inversion_of(car, random.coin());
+    SingleTrackInversion scaled = inversion;
+    scaled.front_slip_gradient_s2pm *= scale;
+    scaled.rear_slip_gradient_s2pm *= scale;
+    DynamicsInversion by_input, by_gradients;
+    by_input.update(inversion, v, car.wheelbase_m(), a, scale);
+    by_gradients.update(scaled, v, car.wheelbase_m(), a);
+    const std::string inputs =
+        "scale " + std::to_string(scale) + ", v " + std::to_string(v) + "; " + seed_message(seed);
+    EXPECT_NEAR(by_input.gain, by_gradients.gain, 1e-12) << inputs;
+    EXPECT_NEAR(by_input.slip_lag_m, by_gradients.slip_lag_m, 1e-12) << inputs;
+    EXPECT_NEAR(by_input.bend_m2, by_gradients.bend_m2, 1e-9) << inputs;
+    EXPECT_NEAR(by_input.rear_slip_m, by_gradients.rear_slip_m, 1e-12) << inputs;
+    DynamicsInversion unscaled;
+    unscaled.update(inversion, v, car.wheelbase_m(), a);
+    if (std::abs(v) > 1.0 && std::abs(scale - 1.0) > 0.01) {
+      EXPECT_NE(by_input.slip_lag_m, unscaled.slip_lag_m) << inputs;
+    }
+  }
 }
 
 }  // namespace

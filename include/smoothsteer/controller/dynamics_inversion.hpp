@@ -33,8 +33,9 @@ struct DynamicsInversion {
 
   //! speed_mps: the signed speed v; acceleration_mps2: the measured dv/dt
   //! (ControllerInput::acceleration_mps2).
+  //! slip_gradient_scale: ControllerInput::slip_gradient_scale.
   void update(const SingleTrackInversion& inversion, double speed_mps, double vehicle_wheelbase_m,
-              double acceleration_mps2) noexcept {
+              double acceleration_mps2, double slip_gradient_scale = 1.0) noexcept {
     const double speed_magnitude = std::abs(speed_mps);
     // An axle's slip gradient is inversely proportional to its load (cornering stiffness
     // B C mu Fz, the Magic Formula's slope at zero slip).
@@ -42,8 +43,9 @@ struct DynamicsInversion {
         std::max(min_load_share, 1.0 - acceleration_mps2 * inversion.front_load_transfer_s2pm);
     const double rear_load =
         std::max(min_load_share, 1.0 + acceleration_mps2 * inversion.rear_load_transfer_s2pm);
-    const double rear = inversion.enabled ? inversion.rear_slip_gradient_s2pm / rear_load : 0.0;
-    const double front = inversion.enabled ? inversion.front_slip_gradient_s2pm / front_load : 0.0;
+    const double scale = inversion.enabled ? slip_gradient_scale : 0.0;
+    const double rear = scale * inversion.rear_slip_gradient_s2pm / rear_load;
+    const double front = scale * inversion.front_slip_gradient_s2pm / front_load;
     const double preview_s = inversion.enabled ? inversion.preview_time_s : 0.0;
     const double v2 = speed_magnitude * speed_magnitude;
     const double lag = (front + rear) * v2;  // L (K_f + K_r) v^2 kappa' / L

@@ -49,6 +49,13 @@ struct ControllerInput {
   //! Half the span of the command history the prediction reads (DelayPrediction::capacity
   //! periods of 2 ms cover 1 s, shared with the actuator delay).
   static constexpr double max_pose_age_s = 0.5;
+  //! How much more the car's tires slip than the controller's model says: the single-track
+  //! inversion's slip gradients K_f, K_r are taken times this factor (a loaded car, worn or
+  //! stiffer tires, a wrong vehicle file; SteeringSystem learns it from the pose,
+  //! course_error_estimator.hpp). 1 (the default): the model as given. In [min, max].
+  double slip_gradient_scale = 1.0;
+  static constexpr double min_slip_gradient_scale = 0.5;
+  static constexpr double max_slip_gradient_scale = 2.0;
 };
 
 //! Diagnostics of the path-tracking state (all relative to the reference path).
@@ -118,6 +125,8 @@ inline std::optional<InputRangeViolation> first_input_range_violation(
       {"rear_axle_side_slip_rad", input.rear_axle_side_slip_rad,
        -ControllerInput::max_side_slip_rad, ControllerInput::max_side_slip_rad, false, "rad"},
       {"pose_age_s", input.pose_age_s, 0.0, ControllerInput::max_pose_age_s, false, "s"},
+      {"slip_gradient_scale", input.slip_gradient_scale, ControllerInput::min_slip_gradient_scale,
+       ControllerInput::max_slip_gradient_scale, false, ""},
   };
   for (const InputRangeViolation& check : checks) {
     const bool above_low = check.low_open ? check.value > check.low : check.value >= check.low;

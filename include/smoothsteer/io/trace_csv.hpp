@@ -14,7 +14,7 @@
 namespace smoothsteer::io {
 
 //! Number of columns of trace.csv.
-inline constexpr std::size_t trace_column_count = 28;
+inline constexpr std::size_t trace_column_count = 30;
 //! Column names of trace.csv (docs/cli.md), in the order of trace_row().
 const std::array<const char*, trace_column_count>& trace_column_names() noexcept;
 //! The sample's values in the order of trace_column_names().

@@ -74,6 +74,9 @@ struct SideSlipEstimation {
   //! The held command makes up for the learned offset through the controller's actuator model
   //! (SteeringSystemParameters::compensate_steering_offset).
   bool compensate_steering_offset = true;
+  //! The system learns what the slip estimate gets wrong about the course from the pose
+  //! (SteeringSystemParameters::course_error, its defaults); false: off.
+  bool estimate_course_error = true;
 };
 
 struct SimulationParameters {
@@ -178,6 +181,10 @@ struct TraceSample {
   double yaw_rate_radps = 0.0;
   //! The controller's estimate of the plant's disturbance [1/m] (TrackingDiagnostics).
   double disturbance_curvature = 0.0;
+  //! What the system's course error estimator learned (SideSlipDiagnostics): the slip's
+  //! relative error a and the course bias c [rad].
+  double slip_error = 0.0;
+  double course_bias_rad = 0.0;
 };
 
 //! Number of values of a TraceSample: every field is a double.

@@ -40,6 +40,7 @@
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/status.hpp"
+#include "smoothsteer/system/course_error_estimator.hpp"
 #include "smoothsteer/system/driving_domain.hpp"
 #include "smoothsteer/system/pose_latency_estimator.hpp"
 #include "smoothsteer/system/steering_offset_compensation.hpp"
@@ -72,6 +73,11 @@ struct SteeringSystemParameters {
   //! (SteeringSystemInput::pose_age_s = 0; pose_latency_estimator.hpp): the lag of the pose's
   //! heading behind the gyro, plus the time since the pose last changed.
   bool estimate_pose_age = true;
+  //! What the side-slip estimate gets wrong about the course (the slip's scale: load, tires, a
+  //! wrong vehicle file; a course bias: crosswind), learned from the pose's steps
+  //! (course_error_estimator.hpp). The law gets the corrected beta_r and the feedforward the
+  //! scaled slip gradients. std::nullopt: beta_r as estimated, the vehicle file's gradients.
+  std::optional<CourseErrorParameters> course_error = CourseErrorParameters{};
   //! The steering actuator's model (dead time and low-pass, steering_actuator.hpp) the command
   //! is held through. With it, the observer (its max_steering_offset_rad > 0) and a lead-wheel
   //! controller whose governor holds finite angle and rate limits, the held command makes up for
@@ -125,6 +131,11 @@ struct SideSlipDiagnostics {
   double steering_offset_rad = 0.0;
   //! the filter's standard deviation of it [rad]
   double steering_offset_std_rad = 0.0;
+  //! What the course error estimator learned (course_error_estimator.hpp; 0 without it): the
+  //! slip's relative error a (the law's beta_r and the feedforward's slip gradients are taken
+  //! times 1 + a) and the course bias c [rad], added to beta_r.
+  double slip_error = 0.0;
+  double course_bias_rad = 0.0;
   //! The observer's update() status (ok without an observer). Not ok: beta_r = 0 this period.
   Status observer_status = Status::ok;
   //! False when the observer's estimate is saturated, or no sample has corrected it for a while
@@ -185,6 +196,9 @@ class SteeringSystem {
   //! The observer's steering offset and the compensation's back to 0 (a new car, a realigned
   //! rack or sensor).
   void forget_steering_offset() noexcept;
+  //! The course error estimator's slip error and course bias back to 0 (a new car, new tires,
+  //! another load); reset() keeps them.
+  void forget_course_error() noexcept;
   //! Replanning: SteeringController::set_path's contract.
   //! With a domain (SteeringSystemParameters::domain) it also measures the path's demand
   //! (curvature_demand(): O(curvature samples), no allocation).
@@ -224,6 +238,7 @@ class SteeringSystem {
   PathCurvatureDemand path_demand_;     //!< of the last path set_path() accepted (with a domain)
   double last_command_rad_ = 0.0;
   PoseLatencyEstimator pose_latency_;  //!< its lag persists across reset()
+  CourseErrorEstimator course_error_;  //!< its slip error and course bias persist across reset()
   Vec2 last_position_{};               //!< the pose of the last update, to see a new one
   double last_heading_rad_ = 0.0;
 };
