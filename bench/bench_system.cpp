@@ -191,4 +191,25 @@ void BM_SteeringOffsetCompensationUpdate(benchmark::State& state) {
 }
 BENCHMARK(BM_SteeringOffsetCompensationUpdate);
 
+//! The course error estimator alone (course_error_estimator.hpp): one pose step compared with
+//! the course and the Kalman filter's prediction and correction, on a car turning at 0.1 rad/s.
+void BM_CourseErrorEstimatorUpdate(benchmark::State& state) {
+  CourseErrorEstimator estimator;
+  const CourseErrorParameters parameters;
+  double t = 0.0, heading = 0.0;
+  Vec2 position{};
+  for (auto _ : state) {
+    const double slip = -0.004 * std::sin(0.5 * t);
+    position = position + 0.2 * Vec2{std::cos(heading + slip), std::sin(heading + slip)};
+    heading += 0.002;
+    benchmark::DoNotOptimize(estimator.update(parameters, {.position = position,
+                                                           .heading_rad = heading,
+                                                           .rear_axle_side_slip_rad = slip,
+                                                           .speed_mps = 10.0,
+                                                           .lateral_acceleration_mps2 = 1.0}));
+    t += 0.02;
+  }
+}
+BENCHMARK(BM_CourseErrorEstimatorUpdate);
+
 }  // namespace
