@@ -223,15 +223,16 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   controller_input_.rear_axle_side_slip_rad = rear_axle_side_slip(input, slip);
   // The pose's age where the input does not give it (pose_latency_estimator.hpp), on a copy
   // committed with the observer; from the gyro samples the observer's gates let through.
+  // A pose that differs from the last one in any value is a new one (a pose at 10 Hz repeats).
+  const bool new_pose =
+      !(input.rear_axle_position.x == last_position_.x &&
+        input.rear_axle_position.y == last_position_.y && input.heading_rad == last_heading_rad_);
   PoseLatencyEstimator latency = pose_latency_;
   if (parameters_.estimate_pose_age) {
     constexpr std::uint32_t gyro_faults =
         fault_yaw_rate_dropped | fault_yaw_rate_implausible | fault_yaw_rate_innovation;
     const bool gyro_usable = observer_ ? (slip.sensors.last_period & gyro_faults) == 0
                                        : std::isfinite(input.yaw_rate_radps);
-    const bool new_pose =
-        !(input.rear_axle_position.x == last_position_.x &&
-          input.rear_axle_position.y == last_position_.y && input.heading_rad == last_heading_rad_);
     const double estimate = latency.update(
         input.heading_rad, new_pose,
         gyro_usable ? input.yaw_rate_radps : std::numeric_limits<double>::quiet_NaN(),
@@ -242,9 +243,6 @@ Status SteeringSystem::update(const SteeringSystemInput& input,
   // (course_error_estimator.hpp), on a copy committed with the observer.
   CourseErrorEstimator course_error = course_error_;
   if (parameters_.course_error) {
-    const bool new_pose =
-        !(input.rear_axle_position.x == last_position_.x &&
-          input.rear_axle_position.y == last_position_.y && input.heading_rad == last_heading_rad_);
     // The yaw rate the observer filtered, else the gyro's (NaN when dropped: no bound).
     const double yaw_rate = observer_ ? slip.yaw_rate_radps : input.yaw_rate_radps;
     const double correction =

@@ -4,7 +4,8 @@
 //! sensors, wired once. update() takes what a car's buses and localization give (rear-axle pose,
 //! speed, longitudinal acceleration, yaw rate, lateral acceleration, and the measured road-wheel
 //! angle where there is one), estimates the rear axle's side slip beta_r with SideSlipObserver
-//! (the law steers the course psi + beta_r, docs/vehicle_dynamics.md), runs the controller, and
+//! (the law steers the course psi + beta_r, docs/vehicle_dynamics.md), corrects it by what the
+//! pose's steps say about the course (course_error_estimator.hpp), runs the controller, and
 //! returns the command, its derivatives and diagnostics: the observer's estimate and which limit
 //! is active. The delay compensation (Smith predictor), the feedforward's single-track inversion
 //! and the friction guard are the controller's own (ControllerParameters). The simulator drives
