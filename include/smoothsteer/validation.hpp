@@ -93,6 +93,15 @@ class RuleChecker {
   void include(const std::optional<Violation>& nested) noexcept {
     if (nested && !first_) first_ = nested;
   }
+  //! A member struct's first violation, named as this owner's field `<prefix><field>` (e.g.
+  //! "SteeringSystemParameters: observer.mass_kg = ...").
+  void include_member(std::optional<Violation> nested, const char* prefix) noexcept {
+    if (nested) {
+      nested->owner = owner_;
+      nested->prefix = prefix;
+    }
+    include(nested);
+  }
   const std::optional<Violation>& first() const noexcept { return first_; }
 
  private:

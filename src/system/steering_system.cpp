@@ -41,26 +41,10 @@ std::optional<Violation> SteeringSystemParameters::first_violation() const noexc
   check.require(source >= 0 && source <= static_cast<int>(SlipInput::observer), "slip_input",
                 source, "must be 0 (kinematic), 1 (sensor) or 2 (observer)");
   if (slip_input == SlipInput::observer) {
-    if (std::optional<Violation> nested = observer.first_violation()) {
-      nested->owner = "SteeringSystemParameters";
-      nested->prefix = "observer.";
-      check.include(nested);
-    }
+    check.include_member(observer.first_violation(), "observer.");
   }
-  if (course_error) {
-    if (std::optional<Violation> nested = course_error->first_violation()) {
-      nested->owner = "SteeringSystemParameters";
-      nested->prefix = "course_error.";
-      check.include(nested);
-    }
-  }
-  if (domain) {
-    if (std::optional<Violation> nested = domain->first_violation()) {
-      nested->owner = "SteeringSystemParameters";
-      nested->prefix = "domain.";
-      check.include(nested);
-    }
-  }
+  if (course_error) check.include_member(course_error->first_violation(), "course_error.");
+  if (domain) check.include_member(domain->first_violation(), "domain.");
   if (actuator) {
     // The controller's model of the actuator: the simulator's sub-step rules do not apply to it.
     check.require(

@@ -24,6 +24,7 @@
 #include <optional>
 #include <string>
 
+#include "smoothsteer/controller/disturbance_estimator.hpp"
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/validation.hpp"
 
@@ -45,12 +46,13 @@ struct CourseErrorParameters {
   double max_slip_error = 0.5;
   double max_course_bias_rad = 0.02;
   //! Learns only driving forwards at this speed or more [m/s], and up to this lateral
-  //! acceleration [m/s^2]: beyond about 0.4 g a passenger car's tires leave their linear range,
-  //! where the slip is not a scale of the model's and the load transfer of a real car (the
-  //! double-track plant) adds its own (the disturbance estimate's bound,
-  //! disturbance_estimator.hpp).
-  double min_speed_mps = 3.0;
-  double max_lateral_acceleration_mps2 = 4.0;
+  //! acceleration [m/s^2]: the disturbance estimate's bounds (disturbance_estimator.hpp), where
+  //! the tires' slip model holds; beyond about 0.4 g a passenger car's tires leave their linear
+  //! range, where the slip is not a scale of the model's and the load transfer of a real car
+  //! (the double-track plant) adds its own.
+  double min_speed_mps = DisturbanceEstimator::min_learning_speed_mps;
+  double max_lateral_acceleration_mps2 =
+      DisturbanceEstimator::max_learning_lateral_acceleration_mps2;
   //! A pose step whose summed residual is beyond this many standard deviations is a jump of the
   //! localization: the residual starts again there, a and c stay.
   double max_innovation_sigmas = 6.0;
