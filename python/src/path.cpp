@@ -13,6 +13,8 @@
 #include "bindings.hpp"
 #include "smoothsteer/path/path.hpp"
 #include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/path/waypoint_conditioner.hpp"
+#include "smoothsteer/path/waypoint_jitter.hpp"
 
 namespace smoothsteer::python {
 namespace {
@@ -49,6 +51,52 @@ py::array_t<double> sample(const Path& path, const py::array_t<double, py::array
 }  // namespace
 
 void bind_path(py::module_& m) {
+  py::class_<WaypointSmoothing>(m, "WaypointSmoothing",
+                                "How Path.from_waypoints fits noisy waypoints (docs/controller.md, "
+                                "\"Paths as they come\").")
+      .def(py::init<double, bool>(), py::arg("tolerance_m") = 0.0,
+           py::arg("estimate_jitter") = false)
+      .def_readwrite("tolerance_m", &WaypointSmoothing::tolerance_m,
+                     "RMS distance of the fit from the waypoints [m]; 0 interpolates")
+      .def_readwrite("estimate_jitter", &WaypointSmoothing::estimate_jitter,
+                     "fit at least sqrt(2) times the jitter estimated from the waypoints");
+  using WC = WaypointConditioner;
+  py::class_<WC::Parameters>(m, "WaypointConditionerParameters",
+                             "WaypointConditioner's settings; keyword arguments.")
+      .def(py::init(&from_keywords<WC::Parameters>))
+      .def_readwrite("memory_windows", &WC::Parameters::memory_windows,
+                     "windows the pooled jitter estimate remembers, [1, 1e6]")
+      .def_readwrite("tolerance_m", &WC::Parameters::tolerance_m,
+                     "the least tolerance each window is fitted with [m], [0, 10]")
+      .def("validate", &WC::Parameters::validate);
+  py::class_<WC>(m, "WaypointConditioner",
+                 "A stack's trajectory windows fitted one after another at the jitter pooled "
+                 "over them (docs/controller.md, \"Paths as they come\"): keep one per planner "
+                 "and hand each window's Path to SteeringSystem.set_path().")
+      .def(py::init([](const WC::Parameters& p) { return WC(p); }),
+           py::arg("parameters") = WC::Parameters{})
+      .def(
+          "fit",
+          [](WC& self, const py::array_t<double, py::array::c_style | py::array::forcecast>& xy) {
+            return std::make_shared<Path>(self.fit(waypoints_from(xy)));
+          },
+          py::arg("waypoints"),
+          "Pools the window's (N x 2 array x, y [m]) jitter and fits it at sqrt(2) times the "
+          "pooled jitter (at least parameters.tolerance_m): a Path.")
+      .def_property_readonly("jitter_m", &WC::jitter_m, "the pooled jitter per coordinate [m]")
+      .def_property_readonly("tolerance_m", &WC::tolerance_m,
+                             "the tolerance the last window was fitted with [m]")
+      .def_property_readonly("windows", &WC::windows, "windows pooled so far")
+      .def_property_readonly("parameters", &WC::parameters)
+      .def("reset", &WC::reset, "forgets the estimate (another planner)");
+  m.def(
+      "estimate_waypoint_jitter",
+      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& xy) {
+        return estimate_waypoint_jitter(waypoints_from(xy));
+      },
+      py::arg("waypoints"),
+      "The jitter's standard deviation per coordinate [m] read from an N x 2 array of waypoints "
+      "sampled from lines, arcs and clothoids; 0 for clean ones or fewer than 20 points.");
   py::class_<PathPoint>(m, "PathPoint", "A point on the path.")
       .def_property_readonly(
           "position", [](const PathPoint& p) { return py::make_tuple(p.position.x, p.position.y); },
@@ -81,14 +129,17 @@ void bind_path(py::module_& m) {
       .def_static(
           "from_waypoints",
           [](const py::array_t<double, py::array::c_style | py::array::forcecast>& xy,
-             double smoothing_tolerance_m) {
-            return std::make_shared<Path>(
-                Path::from_waypoints(waypoints_from(xy), WaypointSmoothing{smoothing_tolerance_m}));
+             double smoothing_tolerance_m, bool estimate_jitter) {
+            return std::make_shared<Path>(Path::from_waypoints(
+                waypoints_from(xy), WaypointSmoothing{smoothing_tolerance_m, estimate_jitter}));
           },
           py::arg("waypoints"), py::arg("smoothing_tolerance_m") = 0.0,
-          "C2 natural cubic spline through an N x 2 array of waypoints x, y [m]; with "
-          "smoothing_tolerance_m > 0 the smoothest C2 spline whose knots stay that RMS distance "
-          "[m] from the waypoints (noisy planner samples or recordings).")
+          py::arg("estimate_jitter") = true,
+          "C2 spline through an N x 2 array of waypoints x, y [m]: the smoothest C2 spline whose "
+          "knots stay an RMS distance from the waypoints, the larger of smoothing_tolerance_m "
+          "and (estimate_jitter) sqrt(2) times the jitter estimate_waypoint_jitter() reads from "
+          "them. Clean waypoints are interpolated exactly; estimate_jitter=False with "
+          "smoothing_tolerance_m=0 always interpolates.")
       .def_static(
           "circle",
           [](const py::object& center, double radius_m, bool counter_clockwise,

@@ -46,8 +46,7 @@ void bind_simulation_parameters(py::module_& m) {
       .def_readwrite("spacing_m", &W::spacing_m, "[m] between waypoints")
       .def_readwrite("jitter_std_m", &W::jitter_std_m, "[m] Gaussian, per coordinate")
       .def_readwrite("smoothing_tolerance_m", &W::smoothing_tolerance_m,
-                     "[m]; None: jitter_std_m sqrt(2)")
-      .def("tolerance_m", &W::tolerance_m, "the tolerance the windows are fitted with [m]");
+                     "[m]; None: the jitter estimated from the windows (WaypointConditioner)");
 
   py::enum_<SideSlipSource>(m, "SideSlipSource")
       .value("none", SideSlipSource::none, "beta_r = 0: the kinematic assumption")

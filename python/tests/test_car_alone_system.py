@@ -53,23 +53,29 @@ def test_stack_windows_on_a_curve_stay_on_the_path():
     assert worst < 0.05, worst
 
 
-def stack_on_a_circle(sigma, seed, smoothing=True, radius=60.0, speed=12.0):
+def stack_on_a_circle(sigma, seed, smoothing="told", radius=60.0, speed=12.0):
     """Max |e| of a kinematic car on a 60 m circle at 12 m/s whose planner sends a window (5 m
     behind, 100 m ahead, 1 m spacing, Gaussian jitter sigma per coordinate) every 0.1 s, fitted
-    with the smoothing spline at Reinsch's tolerance sigma sqrt(2) (or interpolated)."""
+    with the smoothing spline at Reinsch's tolerance sigma sqrt(2) ("told"), at the jitter a
+    WaypointConditioner pools over the windows ("estimated") or interpolated."""
     rng = np.random.default_rng(seed)
     system = ss.make_steering_system(
         car(), ss.SteeringSystemOptions(max_speed_mps=30.0, slip_input=ss.SlipInput.kinematic))
     model = ss.KinematicSingleTrack(car().vehicle.wheelbase_m)
     position, heading, worst = (0.0, -radius), 0.0, 0.0
-    tolerance = sigma * math.sqrt(2.0) if smoothing else 0.0
+    tolerance = sigma * math.sqrt(2.0) if smoothing == "told" else 0.0
+    conditioner = ss.WaypointConditioner()
     for k in range(1500):
         if k % 5 == 0:
             angle = math.atan2(position[1], position[0])
             s = np.arange(-5.0, 100.0, 1.0) / radius + angle
             window = np.column_stack([radius * np.cos(s), radius * np.sin(s)])
             window += rng.normal(0.0, sigma, window.shape)
-            system.set_path(ss.Path.from_waypoints(window, smoothing_tolerance_m=tolerance))
+            if smoothing == "estimated":
+                system.set_path(conditioner.fit(window))
+            else:
+                system.set_path(ss.Path.from_waypoints(
+                    window, smoothing_tolerance_m=tolerance, estimate_jitter=False))
         out = system.update(position, heading, speed, period_s=0.02)
         worst = max(worst, abs(math.hypot(*position) - radius))
         if worst > 5.0:
@@ -91,8 +97,20 @@ def test_jittered_planner_windows_track_as_clean_ones_when_smoothed():
             worst = stack_on_a_circle(sigma, seed)
             assert worst <= 1.2 * clean + sigma, f"seed {seed}, sigma {sigma}: {worst} m"
     smoothed = stack_on_a_circle(0.02, base_seed())
-    interpolated = stack_on_a_circle(0.02, base_seed(), smoothing=False)
+    interpolated = stack_on_a_circle(0.02, base_seed(), smoothing="interpolated")
     assert interpolated > 2.0 * smoothed, f"{interpolated} m interpolated, {smoothed} m smoothed"
+
+
+def test_a_stack_that_does_not_know_its_jitter_tracks_as_one_that_does():
+    """The same windows fitted by a WaypointConditioner, which reads the jitter from the windows
+    themselves: max |e| within 1.2x the clean figure plus the jitter, as when it is told."""
+    clean = stack_on_a_circle(0.0, 0, smoothing="estimated")
+    assert clean == stack_on_a_circle(0.0, 0)  # clean windows are interpolated exactly
+    for case in range(max(1, property_cases() // 40)):  # 10 seeds at CI's 400
+        seed = base_seed() + case
+        for sigma in (0.005, 0.02, 0.05):
+            worst = stack_on_a_circle(sigma, seed, smoothing="estimated")
+            assert worst <= 1.2 * clean + sigma, f"seed {seed}, sigma {sigma}: {worst} m"
 
 
 def test_beyond_domain_and_certified_speed_are_flagged():

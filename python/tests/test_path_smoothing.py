@@ -1,4 +1,5 @@
-"""Path.from_waypoints with smoothing_tolerance_m: a smoothing spline through noisy waypoints."""
+"""Path.from_waypoints with smoothing_tolerance_m or the jitter estimated from the waypoints: a
+smoothing spline through noisy waypoints; WaypointConditioner for a stack's windows."""
 
 import numpy as np
 import pytest
@@ -21,18 +22,54 @@ def middle_curvature_error(path, radius):
 def test_smoothing_keeps_the_arcs_curvature():
     for seed in range(5):
         xy = jittered_arc(100.0, 0.01, seed)
-        interpolating = ss.Path.from_waypoints(xy)
+        interpolating = ss.Path.from_waypoints(xy, estimate_jitter=False)
         smoothed = ss.Path.from_waypoints(xy, smoothing_tolerance_m=0.01 * np.sqrt(2.0))
         assert middle_curvature_error(smoothed, 100.0) < 0.1 * middle_curvature_error(
             interpolating, 100.0
         ), f"seed {seed}"
 
 
-def test_zero_tolerance_interpolates():
+def test_zero_tolerance_without_the_estimate_interpolates():
     xy = jittered_arc(50.0, 0.005, 3)
-    a = ss.Path.from_waypoints(xy).sample(np.linspace(0.0, 70.0, 50))
-    b = ss.Path.from_waypoints(xy, smoothing_tolerance_m=0.0).sample(np.linspace(0.0, 70.0, 50))
+    s = np.linspace(0.0, 70.0, 50)
+    a = ss.Path.from_waypoints(xy, estimate_jitter=False).sample(s)
+    b = ss.Path.from_waypoints(xy, smoothing_tolerance_m=0.0, estimate_jitter=False).sample(s)
     np.testing.assert_array_equal(a, b)
+    assert np.abs(a[:, 3] - 1.0 / 50.0).max() > 0.01  # the jitter's curvature, interpolated
+
+
+def test_by_default_the_jitter_is_estimated_from_the_waypoints():
+    for seed in range(5):
+        for sigma in (0.002, 0.01, 0.04):
+            xy = jittered_arc(100.0, sigma, seed)
+            assert 0.5 * sigma < ss.estimate_waypoint_jitter(xy) < 1.6 * sigma, (seed, sigma)
+            by_default = ss.Path.from_waypoints(xy)
+            told = ss.Path.from_waypoints(xy, smoothing_tolerance_m=sigma * np.sqrt(2.0))
+            interpolating = ss.Path.from_waypoints(xy, estimate_jitter=False)
+            error = middle_curvature_error(by_default, 100.0)
+            assert error < 0.1 * middle_curvature_error(interpolating, 100.0), (seed, sigma)
+            assert error < 2.0 * middle_curvature_error(told, 100.0) + 1e-4, (seed, sigma)
+    clean = jittered_arc(100.0, 0.0, 0)
+    assert ss.estimate_waypoint_jitter(clean) == 0.0
+    s = np.linspace(0.0, 70.0, 50)
+    np.testing.assert_array_equal(
+        ss.Path.from_waypoints(clean).sample(s),
+        ss.Path.from_waypoints(clean, estimate_jitter=False).sample(s))
+
+
+def test_the_conditioner_pools_the_windows_jitter():
+    conditioner = ss.WaypointConditioner(ss.WaypointConditionerParameters(memory_windows=10))
+    assert conditioner.windows == 0 and conditioner.jitter_m == 0.0
+    for seed in range(20):
+        path = conditioner.fit(jittered_arc(100.0, 0.01, seed))
+        assert isinstance(path, ss.Path)
+    assert conditioner.windows == 20
+    assert 0.008 < conditioner.jitter_m < 0.012
+    assert conditioner.tolerance_m == pytest.approx(np.sqrt(2.0) * conditioner.jitter_m)
+    conditioner.reset()
+    assert conditioner.windows == 0
+    with pytest.raises(ValueError, match="memory_windows = 0 must be finite and in"):
+        ss.WaypointConditioner(ss.WaypointConditionerParameters(memory_windows=0))
 
 
 def test_bad_tolerance_names_the_field():

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "path_detail.hpp"
 #include "smoothsteer/math/angles.hpp"
+#include "smoothsteer/path/waypoint_jitter.hpp"
 
 namespace smoothsteer {
 namespace {
@@ -212,11 +214,20 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints) {
 Path Path::from_waypoints(const std::vector<Vec2>& waypoints, WaypointSmoothing smoothing) {
   constexpr const char* where = "Path::from_waypoints";
   validate_waypoints(where, waypoints);
-  const double tolerance = smoothing.tolerance_m;
+  double tolerance = smoothing.tolerance_m;
   if (!std::isfinite(tolerance) || !(tolerance >= 0.0) || !(tolerance <= max_extent_m)) {
     fail(std::string(where) + ": smoothing.tolerance_m = " + detail::format_number(tolerance) +
          " must be finite and in [0, 1e9] m");
   }
+  // Reinsch's criterion at the jitter's own RMS distance, sigma sqrt(2) (WaypointSmoothing).
+  const double jitter_tolerance =
+      smoothing.estimate_jitter ? std::numbers::sqrt2 * estimate_waypoint_jitter(waypoints) : 0.0;
+  const bool estimated = jitter_tolerance > tolerance;
+  if (estimated) tolerance = jitter_tolerance;
+  const std::string fitted_with =
+      estimated ? "the tolerance " + detail::format_number(tolerance) +
+                      " m estimated from the waypoints' jitter (smoothing.estimate_jitter)"
+                : "smoothing.tolerance_m = " + detail::format_number(tolerance);
   if (waypoints.size() == 2) return assemble({chord_line(waypoints)}, false);
   if (tolerance == 0.0) return assemble(detail::natural_cubic_spline(waypoints), false);
   std::vector<PathSegment> segments = detail::smoothing_cubic_spline(waypoints, tolerance);
@@ -228,13 +239,12 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints, WaypointSmoothing 
   for (std::size_t i = 1; i < knots.size(); ++i) {
     if (!(norm(knots[i] - knots[i - 1]) >= kDuplicateDistance_m) ||
         !(segments[i - 1].length >= kDuplicateDistance_m)) {
-      fail(std::string(where) + ": smoothing.tolerance_m = " + detail::format_number(tolerance) +
-           " collapses the fit between waypoints[" + std::to_string(i - 1) + "] and [" +
-           std::to_string(i) + "]; use a smaller tolerance");
+      fail(std::string(where) + ": " + fitted_with + " collapses the fit between waypoints[" +
+           std::to_string(i - 1) + "] and [" + std::to_string(i) + "]; use a smaller tolerance");
     }
   }
   if (const std::optional<std::size_t> turn = find_reversal(knots)) {
-    fail(std::string(where) + ": smoothing.tolerance_m = " + detail::format_number(tolerance) +
+    fail(std::string(where) + ": " + fitted_with +
          " folds the fitted path back on itself at waypoints[" + std::to_string(*turn) +
          "]; use a smaller tolerance");
   }

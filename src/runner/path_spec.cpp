@@ -68,10 +68,15 @@ void add_clothoid(ConfigSection& piece, PathBuilder& builder) {
 }
 
 //! `smoothing_tolerance_m` of a waypoints path: the RMS distance [m] a smoothing spline keeps
-//! from noisy waypoints (Path::from_waypoints); absent or 0 interpolates them.
+//! from noisy waypoints (Path::from_waypoints); absent or 0 interpolates them. `estimate_jitter`
+//! (default false): at least the jitter the waypoints show (WaypointSmoothing).
 WaypointSmoothing smoothing(ConfigSection& c) {
-  if (!c.has("smoothing_tolerance_m")) return {};
-  return WaypointSmoothing{c.number("smoothing_tolerance_m", 0.0, {0.0, 10.0})};
+  WaypointSmoothing smoothing;
+  if (c.has("smoothing_tolerance_m")) {
+    smoothing.tolerance_m = c.number("smoothing_tolerance_m", 0.0, {0.0, 10.0});
+  }
+  smoothing.estimate_jitter = c.boolean("estimate_jitter", false);
+  return smoothing;
 }
 
 }  // namespace

@@ -147,6 +147,7 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
   const long planner_steps =
       planner.active() ? std::lround(planner.period_s / parameters.control_period_s) : 0;
   std::mt19937_64 planner_engine(parameters.noise_seed ^ 0x9e3779b97f4a7c15ULL);
+  WaypointConditioner conditioner;
   ProjectionHint planner_hint;
 
   std::mt19937_64 engine(parameters.noise_seed);
@@ -187,7 +188,7 @@ SimulationResult closed_loop(const Path& path, const PathPlan* plan, const Vehic
       const double center = active->project(rear.position, planner_hint).arc_length_m;
       std::shared_ptr<const Path> window;
       try {
-        window = planner_window(*active, center, planner, planner_engine);
+        window = planner_window(*active, center, planner, planner_engine, conditioner);
       } catch (const std::exception& error) {
         throw std::invalid_argument("SimulationParameters.planner: the window at t = " + text(t) +
                                     " s cannot be fitted: " + error.what());

@@ -6,14 +6,11 @@
 
 namespace smoothsteer {
 
-double PlannerWindows::tolerance_m() const noexcept {
-  return smoothing_tolerance_m ? *smoothing_tolerance_m : jitter_std_m * std::sqrt(2.0);
-}
-
 namespace detail {
 
 std::shared_ptr<const Path> planner_window(const Path& road, double center_m,
-                                           const PlannerWindows& windows, std::mt19937_64& engine) {
+                                           const PlannerWindows& windows, std::mt19937_64& engine,
+                                           WaypointConditioner& conditioner) {
   double begin = center_m - windows.behind_m;
   double end = center_m + windows.ahead_m;
   if (road.is_closed()) {
@@ -37,8 +34,11 @@ std::shared_ptr<const Path> planner_window(const Path& road, double center_m,
     }
     waypoints[i] = point;
   }
-  return std::make_shared<const Path>(
-      Path::from_waypoints(waypoints, WaypointSmoothing{windows.tolerance_m()}));
+  if (windows.smoothing_tolerance_m) {
+    return std::make_shared<const Path>(
+        Path::from_waypoints(waypoints, WaypointSmoothing{*windows.smoothing_tolerance_m}));
+  }
+  return std::make_shared<const Path>(conditioner.fit(waypoints));
 }
 
 }  // namespace detail

@@ -153,6 +153,9 @@ TEST_F(ScenarioErrors, BadOverridesAndWaypointFiles) {
   EXPECT_EQ(error_of(smoothed), "");
   expect_contains(error_of(smoothed, {"path.smoothing_tolerance_m=-1"}),
                   {"'path.smoothing_tolerance_m'", "-1", "out of range"});
+  EXPECT_EQ(error_of(smoothed, {"path.estimate_jitter=true"}), "");
+  expect_contains(error_of(smoothed, {"path.estimate_jitter=maybe"}),
+                  {"'path.estimate_jitter'", "expected true or false", "maybe"});
   const std::string vehicle =
       write("v.yaml", "vehicle: {file: missing_car.yaml}\npath: {type: straight}\n");
   expect_contains(error_of(vehicle), {"missing_car.yaml", "cannot open"});

@@ -92,7 +92,10 @@ TEST(PlannerWindows, WindowsLieOnTheRoadTheySampleAndSpanWhatTheyAreTold) {
         " m, road " + std::to_string(road.length()) + " m, centre " + std::to_string(centre) +
         " m, behind " + std::to_string(windows.behind_m) + ", ahead " +
         std::to_string(windows.ahead_m) + ", spacing " + std::to_string(windows.spacing_m);
-    const std::shared_ptr<const Path> clean = detail::planner_window(road, centre, windows, engine);
+    WaypointConditioner conditioner;
+    windows.smoothing_tolerance_m = 0.0;  // the interpolation itself
+    const std::shared_ptr<const Path> clean =
+        detail::planner_window(road, centre, windows, engine, conditioner);
     // The interpolating spline's own error: O(h^2) at the S's curvature reversal (2 / R) and the
     // natural ends, mm elsewhere.
     const double interpolation = 0.15 * windows.spacing_m * windows.spacing_m / radius + 1e-3;
@@ -110,8 +113,11 @@ TEST(PlannerWindows, WindowsLieOnTheRoadTheySampleAndSpanWhatTheyAreTold) {
     EXPECT_NEAR(clean->length(), span, 0.01 * span + 1e-3) << context;
 
     windows.jitter_std_m = random.uniform(0.005, 0.05);
+    // The jitter's own RMS distance: this test is the windows' geometry; the estimate of the
+    // jitter is tests/path/test_waypoint_conditioner.cpp's.
+    windows.smoothing_tolerance_m = windows.jitter_std_m * std::sqrt(2.0);
     const std::shared_ptr<const Path> jittered =
-        detail::planner_window(road, centre, windows, engine);
+        detail::planner_window(road, centre, windows, engine, conditioner);
     double worst = 0.0;
     for (double s = 5.0; s <= jittered->length() - 5.0; s += 0.25) {
       worst =

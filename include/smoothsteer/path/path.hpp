@@ -58,6 +58,11 @@ struct WaypointSmoothing {
   //! For Gaussian jitter of standard deviation sigma on each coordinate, sigma sqrt(2) is the
   //! jitter's own RMS distance. Larger than the least-squares line's residual gives that line.
   double tolerance_m = 0.0;
+  //! Fit at least the jitter the waypoints show: the tolerance is then the larger of
+  //! tolerance_m and sqrt(2) estimate_waypoint_jitter(waypoints) (path/waypoint_jitter.hpp),
+  //! so that a stack need not know its planner's noise. Clean waypoints estimate 0 and are
+  //! interpolated exactly (with tolerance_m 0).
+  bool estimate_jitter = false;
 };
 
 class Path {

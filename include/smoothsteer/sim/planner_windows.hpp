@@ -18,14 +18,12 @@ struct PlannerWindows {
   double ahead_m = 100.0;   //!< window end ahead of it, [2 spacing_m, 10000] m
   double spacing_m = 1.0;   //!< waypoint spacing, [0.05, 50] m (equal steps over the window)
   double jitter_std_m = 0;  //!< Gaussian noise per waypoint coordinate, [0, 1] m
-  //! Path::from_waypoints' smoothing tolerance [m], in [0, 10]; absent: jitter_std_m sqrt(2),
-  //! the jitter's own RMS distance (Reinsch's criterion; 0, an exact interpolation, when the
-  //! waypoints are clean).
+  //! Path::from_waypoints' smoothing tolerance [m], in [0, 10]; absent: as a stack that does
+  //! not know its planner's noise fits them, by a WaypointConditioner (the jitter estimated
+  //! from the windows themselves and pooled over them; clean windows are interpolated exactly).
   std::optional<double> smoothing_tolerance_m;
 
   bool active() const noexcept { return period_s > 0.0; }
-  //! The tolerance the windows are fitted with.
-  double tolerance_m() const noexcept;
 };
 // The rules are SimulationParameters::first_violation's (fields "planner.<key>").
 
