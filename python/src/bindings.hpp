@@ -3,10 +3,12 @@
 // One function per part of the library; module.cpp calls them in order, so that a class is
 // registered before the functions that take it.
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/math/vec2.hpp"
@@ -56,6 +58,10 @@ void bind_system(py::module_& m);
 
 //! A point from any sequence of two numbers (tuple, list, numpy array); TypeError otherwise.
 Vec2 to_vec2(const py::handle& point, const char* argument);
+//! Waypoints from an N x 2 array of x, y [m]; ValueError naming `where` otherwise.
+std::vector<Vec2> waypoints_from(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
+    const char* where = "Path.from_waypoints");
 //! Sets the attributes of `target` (a bound object) from keyword arguments, `enabled` last; an
 //! unknown name raises TypeError naming it and the class.
 void set_attributes(py::object& target, const py::kwargs& keywords);

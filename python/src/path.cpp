@@ -17,12 +17,12 @@
 #include "smoothsteer/path/waypoint_jitter.hpp"
 
 namespace smoothsteer::python {
-namespace {
 
 std::vector<Vec2> waypoints_from(
-    const py::array_t<double, py::array::c_style | py::array::forcecast>& points) {
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
+    const char* where) {
   if (points.ndim() != 2 || points.shape(1) != 2) {
-    throw py::value_error("Path.from_waypoints: waypoints must be an N x 2 array of x, y [m]");
+    throw py::value_error(std::string(where) + ": waypoints must be an N x 2 array of x, y [m]");
   }
   std::vector<Vec2> waypoints(static_cast<std::size_t>(points.shape(0)));
   const auto view = points.unchecked<2>();
@@ -31,6 +31,8 @@ std::vector<Vec2> waypoints_from(
   }
   return waypoints;
 }
+
+namespace {
 
 //! evaluate() on an array of arc lengths: N x 4 columns x, y, heading, curvature.
 py::array_t<double> sample(const Path& path, const py::array_t<double, py::array::forcecast>& s) {
@@ -78,7 +80,7 @@ void bind_path(py::module_& m) {
       .def(
           "fit",
           [](WC& self, const py::array_t<double, py::array::c_style | py::array::forcecast>& xy) {
-            return std::make_shared<Path>(self.fit(waypoints_from(xy)));
+            return std::make_shared<Path>(self.fit(waypoints_from(xy, "WaypointConditioner.fit")));
           },
           py::arg("waypoints"),
           "Pools the window's (N x 2 array x, y [m]) jitter and fits it at sqrt(2) times the "

@@ -368,6 +368,23 @@ void bind_system(py::module_& m) {
             }
           },
           py::arg("path"), "Replanning: replaces the path between two update() calls.")
+      .def(
+          "set_waypoints",
+          [](SteeringSystem& system,
+             const py::array_t<double, py::array::c_style | py::array::forcecast>& xy) {
+            const Status status =
+                system.set_waypoints(waypoints_from(xy, "SteeringSystem.set_waypoints"));
+            if (status != Status::ok) throw ControllerError(status, "", "set_waypoints()");
+          },
+          py::arg("waypoints"),
+          "A planner's window (N x 2 array x, y [m]): fitted at the jitter pooled over the "
+          "windows so far (waypoint_conditioner; clean ones interpolated), then set_path(). "
+          "Raises ValueError for waypoints Path.from_waypoints refuses.")
+      .def_property_readonly("waypoint_conditioner", &SteeringSystem::waypoint_conditioner,
+                             py::return_value_policy::reference_internal,
+                             "the WaypointConditioner of set_waypoints(): jitter_m, windows")
+      .def("forget_waypoint_jitter", &SteeringSystem::forget_waypoint_jitter,
+           "forgets the pooled jitter (another planner)")
       .def_property_readonly("parameters", &SteeringSystem::parameters);
 
   m.def(

@@ -57,7 +57,8 @@ def stack_on_a_circle(sigma, seed, smoothing="told", radius=60.0, speed=12.0):
     """Max |e| of a kinematic car on a 60 m circle at 12 m/s whose planner sends a window (5 m
     behind, 100 m ahead, 1 m spacing, Gaussian jitter sigma per coordinate) every 0.1 s, fitted
     with the smoothing spline at Reinsch's tolerance sigma sqrt(2) ("told"), at the jitter a
-    WaypointConditioner pools over the windows ("estimated") or interpolated."""
+    WaypointConditioner pools over the windows ("estimated"; "system": the system's own, by
+    set_waypoints()) or interpolated."""
     rng = np.random.default_rng(seed)
     system = ss.make_steering_system(
         car(), ss.SteeringSystemOptions(max_speed_mps=30.0, slip_input=ss.SlipInput.kinematic))
@@ -73,6 +74,8 @@ def stack_on_a_circle(sigma, seed, smoothing="told", radius=60.0, speed=12.0):
             window += rng.normal(0.0, sigma, window.shape)
             if smoothing == "estimated":
                 system.set_path(conditioner.fit(window))
+            elif smoothing == "system":
+                system.set_waypoints(window)
             else:
                 system.set_path(ss.Path.from_waypoints(
                     window, smoothing_tolerance_m=tolerance, estimate_jitter=False))
@@ -111,6 +114,18 @@ def test_a_stack_that_does_not_know_its_jitter_tracks_as_one_that_does():
         for sigma in (0.005, 0.02, 0.05):
             worst = stack_on_a_circle(sigma, seed, smoothing="estimated")
             assert worst <= 1.2 * clean + sigma, f"seed {seed}, sigma {sigma}: {worst} m"
+    # The system's own conditioner (set_waypoints) fits the same windows to the same paths.
+    assert stack_on_a_circle(0.02, base_seed(), smoothing="system") == stack_on_a_circle(
+        0.02, base_seed(), smoothing="estimated")
+    system = ss.make_steering_system(car(), ss.SteeringSystemOptions(max_speed_mps=20.0))
+    with pytest.raises(ValueError, match="SteeringSystem.set_waypoints: waypoints must be an N x 2"):
+        system.set_waypoints(np.zeros((4, 3)))
+    with pytest.raises(ValueError, match="at least 2"):
+        system.set_waypoints(np.zeros((1, 2)))
+    system.set_waypoints(np.column_stack([np.arange(0.0, 60.0), 0.01 * np.sin(np.arange(60.0))]))
+    assert system.waypoint_conditioner.windows == 1
+    system.forget_waypoint_jitter()
+    assert system.waypoint_conditioner.windows == 0
 
 
 def test_beyond_domain_and_certified_speed_are_flagged():

@@ -150,6 +150,10 @@ Status SteeringSystem::set_path(std::shared_ptr<const Path> path) noexcept {
   return status;
 }
 
+Status SteeringSystem::set_waypoints(const std::vector<Vec2>& waypoints) {
+  return set_path(std::make_shared<const Path>(conditioner_.fit(waypoints)));
+}
+
 bool SteeringSystem::valid_input(const SteeringSystemInput& input) const noexcept {
   if (!input_in_range(controller_input_)) return false;
   // The wheel's angle is measured or absent (std::nullopt), never NaN or beyond a half turn.

@@ -2,19 +2,23 @@
 // driving stack uses it: no path at set-up, paths by set_path(). Before the first path update()
 // refuses and changes nothing; every shipped car builds from 0.5 to 40 m/s; the lane change
 // runs within the limits and close to the system built on its path; a path tighter than the
-// domain, and a speed above the certified one, are flagged, never an error.
+// domain, and a speed above the certified one, are flagged, never an error; a planner's
+// waypoints by set_waypoints() are fitted at the jitter pooled over its windows.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "smoothsteer/io/vehicle_file.hpp"
 #include "smoothsteer/math/angles.hpp"
 #include "smoothsteer/path/path_builder.hpp"
+#include "smoothsteer/path/waypoint_conditioner.hpp"
 #include "smoothsteer/runner/scenario.hpp"
 #include "smoothsteer/sim/simulation.hpp"
 #include "smoothsteer/system/steering_system.hpp"
@@ -236,6 +240,56 @@ TEST(CarAloneSystem, DomainShrinksWithSpeedAndRejectsBadFields) {
   } catch (const std::invalid_argument& error) {
     EXPECT_NE(std::string(error.what()).find("max_lateral_jerk_mps3"), std::string::npos)
         << error.what();
+  }
+}
+
+// A stack's windows by set_waypoints(): each window is the conditioner's fit at the jitter
+// pooled so far (the same path a WaypointConditioner of the stack's own would give, so the same
+// commands), the pooled jitter converges to the planner's, reset() keeps it and
+// forget_waypoint_jitter() drops it; waypoints the fit refuses throw and leave the path alone.
+TEST(CarAloneSystem, SetWaypointsFitsEachWindowAtThePooledJitter) {
+  const int cases = testing::property_cases(10);
+  for (int i = 0; i < cases; ++i) {
+    const std::uint64_t seed = testing::case_seed(i);
+    testing::Random random(seed + 41);
+    const double sigma = random.uniform(0.002, 0.03);
+    const double radius = random.uniform(40.0, 300.0);
+    SteeringSystem by_waypoints = make_steering_system(car(), up_to(20.0));
+    SteeringSystem by_path = make_steering_system(car(), up_to(20.0));
+    WaypointConditioner conditioner;
+    std::normal_distribution<double> jitter(0.0, sigma);
+    Vec2 position{0.0, -radius + 0.2};
+    SteeringSystemOutput a, b;
+    const std::string context = testing::seed_message(seed) + "; sigma " + std::to_string(sigma) +
+                                " m, radius " + std::to_string(radius);
+    for (int window = 0; window < 25; ++window) {
+      const double angle = std::atan2(position.y, position.x);
+      std::vector<Vec2> points;
+      for (double s = -5.0; s <= 100.0; s += 1.0) {
+        const double at = angle + s / radius;
+        points.push_back(Vec2{radius * std::cos(at), radius * std::sin(at)} +
+                         Vec2{jitter(random.engine()), jitter(random.engine())});
+      }
+      ASSERT_EQ(by_waypoints.set_waypoints(points), Status::ok) << context;
+      ASSERT_EQ(by_path.set_path(std::make_shared<const Path>(conditioner.fit(points))), Status::ok)
+          << context;
+      SteeringSystemInput input = driving_at(10.0, position);
+      input.heading_rad = angle + pi / 2.0;
+      ASSERT_EQ(by_waypoints.update(input, a), Status::ok) << context;
+      ASSERT_EQ(by_path.update(input, b), Status::ok) << context;
+      EXPECT_EQ(a.steering_angle_rad, b.steering_angle_rad) << context;
+      const double turned = angle + 1.0 / radius;  // 1 m further along
+      position = {(radius - 0.2) * std::cos(turned), (radius - 0.2) * std::sin(turned)};
+    }
+    const double pooled = by_waypoints.waypoint_conditioner().jitter_m();
+    EXPECT_NEAR(pooled / sigma, 1.0, 0.2) << context << ", pooled " << pooled;
+    EXPECT_EQ(by_waypoints.waypoint_conditioner().windows(), 25u);
+    ASSERT_EQ(by_waypoints.reset(0.0), Status::ok);
+    EXPECT_EQ(by_waypoints.waypoint_conditioner().jitter_m(), pooled);
+    EXPECT_THROW((void)by_waypoints.set_waypoints({{0.0, 0.0}}), std::invalid_argument);
+    EXPECT_EQ(by_waypoints.waypoint_conditioner().windows(), 25u);
+    by_waypoints.forget_waypoint_jitter();
+    EXPECT_EQ(by_waypoints.waypoint_conditioner().jitter_m(), 0.0);
   }
 }
 

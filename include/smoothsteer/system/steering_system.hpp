@@ -34,12 +34,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "smoothsteer/controller/active_limits.hpp"
 #include "smoothsteer/controller/controller_parameters.hpp"
 #include "smoothsteer/controller/steering_controller.hpp"
 #include "smoothsteer/math/vec2.hpp"
 #include "smoothsteer/path/path.hpp"
+#include "smoothsteer/path/waypoint_conditioner.hpp"
 #include "smoothsteer/status.hpp"
 #include "smoothsteer/system/course_error_estimator.hpp"
 #include "smoothsteer/system/driving_domain.hpp"
@@ -204,6 +206,17 @@ class SteeringSystem {
   //! With a domain (SteeringSystemParameters::domain) it also measures the path's demand
   //! (curvature_demand(): O(curvature samples), no allocation).
   Status set_path(std::shared_ptr<const Path> path) noexcept;
+  //! A planner's window of waypoints, as a driving stack sends one every 0.1 s: fitted by the
+  //! system's WaypointConditioner at the jitter pooled over the windows so far (clean windows
+  //! interpolated; docs/controller.md, "Paths as they come"), then set_path(). Set-up time, not
+  //! the control step: allocates, and throws std::invalid_argument for waypoints
+  //! Path::from_waypoints refuses (the path is then not replaced).
+  Status set_waypoints(const std::vector<Vec2>& waypoints);
+  //! The jitter pooled over the windows set_waypoints() was given; reset() keeps it (it is the
+  //! planner's).
+  const WaypointConditioner& waypoint_conditioner() const noexcept { return conditioner_; }
+  //! Forgets the pooled jitter (another planner).
+  void forget_waypoint_jitter() noexcept { conditioner_.reset(); }
   //! Evaluation hook: SteeringController::set_matched_disturbance.
   bool set_matched_disturbance(double lead_curvature_disturbance) noexcept {
     return controller_->set_matched_disturbance(lead_curvature_disturbance);
@@ -240,6 +253,7 @@ class SteeringSystem {
   double last_command_rad_ = 0.0;
   PoseLatencyEstimator pose_latency_;  //!< its lag persists across reset()
   CourseErrorEstimator course_error_;  //!< its slip error and course bias persist across reset()
+  WaypointConditioner conditioner_;    //!< set_waypoints()' pooled jitter
   Vec2 last_position_{};               //!< the pose of the last update, to see a new one
   double last_heading_rad_ = 0.0;
 };
