@@ -65,7 +65,6 @@ from ._smoothsteer import (  # noqa: F401
     LeadWheelController,
     Path,
     PathBuilder,
-    WaypointSmoothing,
     WaypointConditioner,
     WaypointConditionerParameters,
     estimate_waypoint_jitter,

@@ -53,15 +53,6 @@ py::array_t<double> sample(const Path& path, const py::array_t<double, py::array
 }  // namespace
 
 void bind_path(py::module_& m) {
-  py::class_<WaypointSmoothing>(m, "WaypointSmoothing",
-                                "How Path.from_waypoints fits noisy waypoints (docs/controller.md, "
-                                "\"Paths as they come\").")
-      .def(py::init<double, bool>(), py::arg("tolerance_m") = 0.0,
-           py::arg("estimate_jitter") = false)
-      .def_readwrite("tolerance_m", &WaypointSmoothing::tolerance_m,
-                     "RMS distance of the fit from the waypoints [m]; 0 interpolates")
-      .def_readwrite("estimate_jitter", &WaypointSmoothing::estimate_jitter,
-                     "fit at least sqrt(2) times the jitter estimated from the waypoints");
   using WC = WaypointConditioner;
   py::class_<WC::Parameters>(m, "WaypointConditionerParameters",
                              "WaypointConditioner's settings; keyword arguments.")

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -219,15 +218,16 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints, WaypointSmoothing 
     fail(std::string(where) + ": smoothing.tolerance_m = " + detail::format_number(tolerance) +
          " must be finite and in [0, 1e9] m");
   }
-  // Reinsch's criterion at the jitter's own RMS distance, sigma sqrt(2) (WaypointSmoothing).
   const double jitter_tolerance =
-      smoothing.estimate_jitter ? std::numbers::sqrt2 * estimate_waypoint_jitter(waypoints) : 0.0;
+      smoothing.estimate_jitter ? jitter_tolerance_m(estimate_waypoint_jitter(waypoints)) : 0.0;
   const bool estimated = jitter_tolerance > tolerance;
   if (estimated) tolerance = jitter_tolerance;
-  const std::string fitted_with =
-      estimated ? "the tolerance " + detail::format_number(tolerance) +
-                      " m estimated from the waypoints' jitter (smoothing.estimate_jitter)"
-                : "smoothing.tolerance_m = " + detail::format_number(tolerance);
+  // Where the fit fails, what it was fitted with (built only then).
+  const auto fitted_with = [&] {
+    return estimated ? "the tolerance " + detail::format_number(tolerance) +
+                           " m estimated from the waypoints' jitter (smoothing.estimate_jitter)"
+                     : "smoothing.tolerance_m = " + detail::format_number(tolerance);
+  };
   if (waypoints.size() == 2) return assemble({chord_line(waypoints)}, false);
   if (tolerance == 0.0) return assemble(detail::natural_cubic_spline(waypoints), false);
   std::vector<PathSegment> segments = detail::smoothing_cubic_spline(waypoints, tolerance);
@@ -239,12 +239,12 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints, WaypointSmoothing 
   for (std::size_t i = 1; i < knots.size(); ++i) {
     if (!(norm(knots[i] - knots[i - 1]) >= kDuplicateDistance_m) ||
         !(segments[i - 1].length >= kDuplicateDistance_m)) {
-      fail(std::string(where) + ": " + fitted_with + " collapses the fit between waypoints[" +
+      fail(std::string(where) + ": " + fitted_with() + " collapses the fit between waypoints[" +
            std::to_string(i - 1) + "] and [" + std::to_string(i) + "]; use a smaller tolerance");
     }
   }
   if (const std::optional<std::size_t> turn = find_reversal(knots)) {
-    fail(std::string(where) + ": " + fitted_with +
+    fail(std::string(where) + ": " + fitted_with() +
          " folds the fitted path back on itself at waypoints[" + std::to_string(*turn) +
          "]; use a smaller tolerance");
   }

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "smoothsteer/path/waypoint_jitter.hpp"
 
@@ -36,9 +35,8 @@ Path WaypointConditioner::fit(const std::vector<Vec2>& waypoints) {
     const double weight = 1.0 / std::min(static_cast<double>(windows), parameters_.memory_windows);
     variance += weight * (jitter * jitter - variance);
   }
-  // Reinsch's criterion at the jitter's own RMS distance, sigma sqrt(2) (WaypointSmoothing).
   const double tolerance =
-      std::max(parameters_.tolerance_m, std::numbers::sqrt2 * std::sqrt(variance));
+      std::max(parameters_.tolerance_m, jitter_tolerance_m(std::sqrt(variance)));
   Path path = Path::from_waypoints(waypoints, WaypointSmoothing{tolerance, false});
   pooled_variance_ = variance;
   windows_ = windows;

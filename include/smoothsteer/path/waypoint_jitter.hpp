@@ -7,6 +7,7 @@
 //! off the road), one far above it cuts corners.
 
 #include <cstddef>
+#include <numbers>
 #include <vector>
 
 #include "smoothsteer/math/vec2.hpp"
@@ -30,6 +31,12 @@ namespace smoothsteer {
 //! below min_jitter_m. Needs the waypoints
 //! Path::from_waypoints accepts (no duplicates); set-up time, O(n).
 double estimate_waypoint_jitter(const std::vector<Vec2>& waypoints);
+
+//! The smoothing tolerance for jitter of standard deviation `jitter_std_m` per coordinate [m]:
+//! Reinsch's criterion at the jitter's own RMS distance, sigma sqrt(2) (WaypointSmoothing).
+inline double jitter_tolerance_m(double jitter_std_m) noexcept {
+  return std::numbers::sqrt2 * jitter_std_m;
+}
 
 //! The fewest waypoints estimate_waypoint_jitter() reads; with fewer it returns 0. A short
 //! window of a tight manoeuvre holds as many junctions as samples (the parking lot's reversing
