@@ -122,17 +122,20 @@ void bind_path(py::module_& m) {
       .def_static(
           "from_waypoints",
           [](const py::array_t<double, py::array::c_style | py::array::forcecast>& xy,
-             double smoothing_tolerance_m, bool estimate_jitter) {
+             double smoothing_tolerance_m, bool estimate_jitter, bool restore_corners) {
             return std::make_shared<Path>(Path::from_waypoints(
-                waypoints_from(xy), WaypointSmoothing{smoothing_tolerance_m, estimate_jitter}));
+                waypoints_from(xy),
+                WaypointSmoothing{smoothing_tolerance_m, estimate_jitter, restore_corners}));
           },
           py::arg("waypoints"), py::arg("smoothing_tolerance_m") = 0.0,
-          py::arg("estimate_jitter") = true,
+          py::arg("estimate_jitter") = true, py::arg("restore_corners") = true,
           "C2 spline through an N x 2 array of waypoints x, y [m]: the smoothest C2 spline whose "
           "knots stay an RMS distance from the waypoints, the larger of smoothing_tolerance_m "
           "and (estimate_jitter) sqrt(2) times the jitter estimate_waypoint_jitter() reads from "
           "them. Clean waypoints are interpolated exactly; estimate_jitter=False with "
-          "smoothing_tolerance_m=0 always interpolates.")
+          "smoothing_tolerance_m=0 always interpolates. restore_corners: where the fit bends "
+          "tighter than a 50 m radius at a tolerance of at least 0.014 m, the fit of its residual "
+          "is added (twicing), which restores the corner the smoothing cut.")
       .def_static(
           "circle",
           [](const py::object& center, double radius_m, bool counter_clockwise,

@@ -57,6 +57,25 @@ def test_by_default_the_jitter_is_estimated_from_the_waypoints():
         ss.Path.from_waypoints(clean, estimate_jitter=False).sample(s))
 
 
+def test_tight_corners_are_restored_by_default():
+    # A 20 m radius with 3 cm of jitter: Reinsch's fit (restore_corners=False) cuts the arc by
+    # a few jitters; twiced, the fit stays closer to it. A 100 m radius is not twiced.
+    for seed in range(5):
+        xy = jittered_arc(20.0, 0.03, seed)
+        s = np.linspace(10.0, 50.0, 200)
+        distance = {}
+        for restore in (True, False):
+            fitted = ss.Path.from_waypoints(xy, smoothing_tolerance_m=0.03 * np.sqrt(2.0),
+                                            estimate_jitter=False, restore_corners=restore)
+            points = fitted.sample(s)[:, :2]
+            distance[restore] = np.abs(np.hypot(points[:, 0], points[:, 1] - 20.0) - 20.0).max()
+        assert distance[True] < 0.9 * distance[False], (seed, distance)
+        gentle = jittered_arc(100.0, 0.03, seed)
+        np.testing.assert_array_equal(
+            ss.Path.from_waypoints(gentle, restore_corners=True).sample(s),
+            ss.Path.from_waypoints(gentle, restore_corners=False).sample(s))
+
+
 def test_the_conditioner_pools_the_windows_jitter():
     conditioner = ss.WaypointConditioner(ss.WaypointConditionerParameters(memory_windows=10))
     assert conditioner.windows == 0 and conditioner.jitter_m == 0.0

@@ -230,7 +230,8 @@ Path Path::from_waypoints(const std::vector<Vec2>& waypoints, WaypointSmoothing 
   };
   if (waypoints.size() == 2) return assemble({chord_line(waypoints)}, false);
   if (tolerance == 0.0) return assemble(detail::natural_cubic_spline(waypoints), false);
-  std::vector<PathSegment> segments = detail::smoothing_cubic_spline(waypoints, tolerance);
+  std::vector<PathSegment> segments =
+      detail::smoothing_cubic_spline(waypoints, tolerance, smoothing.restore_corners);
   // Heavy smoothing of a sharp turn can fold the fit back on itself: refuse it by index.
   std::vector<Vec2> knots;
   knots.reserve(segments.size() + 1);

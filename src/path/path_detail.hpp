@@ -18,9 +18,10 @@ std::vector<PathSegment> natural_cubic_spline(const std::vector<Vec2>& waypoints
 
 //! Smoothing cubic spline (Reinsch) through >= 3 validated waypoints: the natural cubic spline
 //! with knots at their chord-length parameters that is closest to them in the RMS sense
-//! allowed by `tolerance_m` (> 0) with the least integral of squared second derivative.
+//! allowed by `tolerance_m` (> 0) with the least integral of squared second derivative;
+//! `restore_corners`: WaypointSmoothing::restore_corners.
 std::vector<PathSegment> smoothing_cubic_spline(const std::vector<Vec2>& waypoints,
-                                                double tolerance_m);
+                                                double tolerance_m, bool restore_corners);
 
 //! One cubic segment per knot interval of the cubic spline with the given knot points, second
 //! derivatives (moments) at the knots and knot spacing (knot_points.size() = moments.size() =

@@ -69,13 +69,15 @@ void add_clothoid(ConfigSection& piece, PathBuilder& builder) {
 
 //! `smoothing_tolerance_m` of a waypoints path: the RMS distance [m] a smoothing spline keeps
 //! from noisy waypoints (Path::from_waypoints); absent or 0 interpolates them. `estimate_jitter`
-//! (default false): at least the jitter the waypoints show (WaypointSmoothing).
+//! (default false): at least the jitter the waypoints show; `restore_corners` (default true):
+//! twice a fit through a tight corner (WaypointSmoothing).
 WaypointSmoothing smoothing(ConfigSection& c) {
   WaypointSmoothing smoothing;
   if (c.has("smoothing_tolerance_m")) {
     smoothing.tolerance_m = c.number("smoothing_tolerance_m", 0.0, {0.0, 10.0});
   }
   smoothing.estimate_jitter = c.boolean("estimate_jitter", false);
+  smoothing.restore_corners = c.boolean("restore_corners", true);
   return smoothing;
 }
 

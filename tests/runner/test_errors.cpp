@@ -156,6 +156,9 @@ TEST_F(ScenarioErrors, BadOverridesAndWaypointFiles) {
   EXPECT_EQ(error_of(smoothed, {"path.estimate_jitter=true"}), "");
   expect_contains(error_of(smoothed, {"path.estimate_jitter=maybe"}),
                   {"'path.estimate_jitter'", "expected true or false", "maybe"});
+  EXPECT_EQ(error_of(smoothed, {"path.restore_corners=false"}), "");
+  expect_contains(error_of(smoothed, {"path.restore_corners=2"}),
+                  {"'path.restore_corners'", "expected true or false", "2"});
   const std::string vehicle =
       write("v.yaml", "vehicle: {file: missing_car.yaml}\npath: {type: straight}\n");
   expect_contains(error_of(vehicle), {"missing_car.yaml", "cannot open"});
