@@ -61,6 +61,9 @@ void bind_path(py::module_& m) {
                      "windows the pooled jitter estimate remembers, [1, 1e6]")
       .def_readwrite("tolerance_m", &WC::Parameters::tolerance_m,
                      "the least tolerance each window is fitted with [m], [0, 10]")
+      .def_readwrite("history_m", &WC::Parameters::history_m,
+                     "how far behind a jittered window's start the earlier windows' waypoints "
+                     "are fitted with it [m], [0, 1000]; 0 fits each window alone")
       .def("validate", &WC::Parameters::validate);
   py::class_<WC>(m, "WaypointConditioner",
                  "A stack's trajectory windows fitted one after another at the jitter pooled "

@@ -91,6 +91,27 @@ def test_the_conditioner_pools_the_windows_jitter():
         ss.WaypointConditioner(ss.WaypointConditionerParameters(memory_windows=0))
 
 
+def test_the_conditioner_fits_each_window_with_the_ones_before():
+    # Windows of a 100 m radius advancing 2 m each: 5 m into a window, where a stack's car is,
+    # the fit with the earlier windows' waypoints behind it lies closer to the arc.
+    rng = np.random.default_rng(5)
+    radius = 100.0
+    with_history = ss.WaypointConditioner()
+    alone = ss.WaypointConditioner(ss.WaypointConditionerParameters(history_m=0.0))
+    squares = {True: 0.0, False: 0.0}
+    for k in range(40):
+        s = np.arange(2.0 * k, 2.0 * k + 80.0, 1.0)
+        xy = np.column_stack([radius * np.sin(s / radius), radius * (1.0 - np.cos(s / radius))])
+        xy += rng.normal(0.0, 0.03, xy.shape)
+        for history, conditioner in ((True, with_history), (False, alone)):
+            x, y = conditioner.fit(xy).sample(np.array([5.0]))[0, :2]
+            if k >= 15:
+                squares[history] += (np.hypot(x, y - radius) - radius) ** 2
+    assert squares[True] < 0.8 * squares[False], squares
+    with pytest.raises(ValueError, match="history_m = -1 must be finite and in"):
+        ss.WaypointConditionerParameters(history_m=-1.0).validate()
+
+
 def test_bad_tolerance_names_the_field():
     with pytest.raises(ValueError, match="smoothing.tolerance_m"):
         ss.Path.from_waypoints(jittered_arc(50.0, 0.005, 1), smoothing_tolerance_m=-1.0)

@@ -116,6 +116,6 @@ def test_stack_mode_hands_the_road_over_as_planner_windows():
     _, noisy = ss.run_scenario(jittered)
     whole_e, clean_e, noisy_e = (r["metrics"]["max_abs_rear_error_m"] for r in (whole, clean, noisy))
     assert clean_e <= 1.1 * whole_e  # measured 0.050 against 0.057 m
-    assert noisy_e <= clean_e + 6 * 0.02  # measured 0.146 m (0.121-0.146 over noise seeds 1-5)
+    assert noisy_e <= clean_e + 3 * 0.02  # measured 0.078 m (0.075-0.082 over noise seeds 1-3)
     with pytest.raises(ValueError, match="planner.period_s"):
         ss.SimulationParameters(planner=ss.PlannerWindows(period_s=0.03)).validate()

@@ -207,15 +207,16 @@ class SteeringSystem {
   //! (curvature_demand(): O(curvature samples), no allocation).
   Status set_path(std::shared_ptr<const Path> path) noexcept;
   //! A planner's window of waypoints, as a driving stack sends one every 0.1 s: fitted by the
-  //! system's WaypointConditioner at the jitter pooled over the windows so far (clean windows
-  //! interpolated; docs/controller.md, "Paths as they come"), then set_path(). Set-up time, not
+  //! system's WaypointConditioner at the jitter pooled over the windows so far, with the
+  //! earlier windows' waypoints behind it (clean windows interpolated; docs/controller.md,
+  //! "Paths as they come"), then set_path(). Set-up time, not
   //! the control step: allocates, and throws std::invalid_argument for waypoints
   //! Path::from_waypoints refuses (the path is then not replaced).
   Status set_waypoints(const std::vector<Vec2>& waypoints);
   //! The jitter pooled over the windows set_waypoints() was given; reset() keeps it (it is the
   //! planner's).
   const WaypointConditioner& waypoint_conditioner() const noexcept { return conditioner_; }
-  //! Forgets the pooled jitter (another planner).
+  //! Forgets the pooled jitter and the earlier windows (another planner).
   void forget_waypoint_jitter() noexcept { conditioner_.reset(); }
   //! Evaluation hook: SteeringController::set_matched_disturbance.
   bool set_matched_disturbance(double lead_curvature_disturbance) noexcept {
